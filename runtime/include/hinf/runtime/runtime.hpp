@@ -1,0 +1,11 @@
+// Umbrella header for the Eigen-only runtime: filters and models.
+#pragma once
+
+#include "hinf/runtime/ekf.hpp"
+#include "hinf/runtime/filter_status.hpp"
+#include "hinf/runtime/lti_filter.hpp"
+#include "hinf/runtime/models/cartesian_position.hpp"
+#include "hinf/runtime/models/hill.hpp"
+#include "hinf/runtime/models/linear.hpp"
+#include "hinf/runtime/models/range_azimuth_elevation.hpp"
+#include "hinf/runtime/rekf.hpp"

@@ -1,0 +1,39 @@
+// Accuracy metrics of one filter in one run, from its error series.
+#pragma once
+#include <optional>
+#include <vector>
+
+namespace hinf::sim {
+
+struct MetricSettings {
+  double steady_state_start_s = 0.0;  // window [start, end] for the RMS/max metrics
+  double converge_threshold_m = 1.0;  // position-error threshold for converge_time_s
+};
+
+struct FilterMetrics {
+  bool diverged = false;              // estimate non-finite or beyond the divergence limit
+  std::optional<double> diverged_at_s;
+  std::optional<double> position_rms_m;    // sqrt(mean |e_p|²) over the window
+  std::optional<double> velocity_rms_mps;  // sqrt(mean |e_v|²) over the window
+  std::optional<double> position_max_m;    // max |e_p| over the window
+  // First t_k such that |e_p(j)| < threshold for every j ≥ k; empty if the last sample
+  // is not below the threshold (never converged).
+  std::optional<double> converge_time_s;
+};
+
+// t, position_error (|e_p|, m), velocity_error (|e_v|, m/s): one entry per step.
+// diverged_at: index of the first diverged step (the series are then only used up to it),
+// or empty. Metrics of a diverged filter are empty (there is no steady state).
+FilterMetrics compute_metrics(const std::vector<double>& t,
+                              const std::vector<double>& position_error,
+                              const std::vector<double>& velocity_error,
+                              std::optional<long> diverged_at, const MetricSettings& settings);
+
+// Statistics of one metric over Monte-Carlo runs (runs where it is empty are counted apart).
+struct MetricStats {
+  long count = 0;  // runs with a value
+  double mean = 0, std = 0, min = 0, max = 0;  // std: sample standard deviation (n − 1)
+};
+MetricStats compute_stats(const std::vector<std::optional<double>>& values);
+
+}  // namespace hinf::sim

@@ -1,0 +1,23 @@
+// Monte-Carlo runs on a pool of std::threads. Run i uses the seed derive_seed(seed, i),
+// so every run — and the whole result — is independent of the number of jobs and of
+// the order in which the threads finish.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "hinf/sim/run.hpp"
+
+namespace hinf::sim {
+
+std::uint64_t run_seed(std::uint64_t seed, long run_index);
+
+// Called after each finished run, serialised (never concurrently), with (done, total).
+using ProgressCallback = std::function<void(long, long)>;
+
+// Results in run-index order; run 0 keeps its trajectory. jobs ≥ 1. If runs throw, the
+// exception of the lowest-index failed run is rethrown after all threads have stopped.
+std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
+                                       const ProgressCallback& progress);
+
+}  // namespace hinf::sim

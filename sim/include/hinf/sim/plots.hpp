@@ -1,0 +1,22 @@
+// PNG plots of a run by gnuplot (Debian's gnuplot, run as a subprocess on a generated
+// script; its exit status is checked): position and velocity error norms against time per
+// filter (the paper's figures 2–5, 7) and the thrust history (figure 6).
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hinf/sim/run.hpp"
+
+namespace hinf::sim {
+
+class PlotError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Writes DIR/position_error.png, DIR/velocity_error.png, DIR/thrust.png (temporary files,
+// renamed when gnuplot succeeded). Returns the file names. Throws PlotError.
+std::vector<std::string> write_plots(const std::string& dir, const Trajectory& trajectory, const std::string& title);
+
+}  // namespace hinf::sim

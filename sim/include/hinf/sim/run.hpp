@@ -1,0 +1,69 @@
+// One simulation run: nonlinear truth, sensor, thrust and the selected filters, stepped
+// together on one measurement stream (step order in estimator.hpp).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hinf/sim/estimator.hpp"
+#include "hinf/sim/metrics.hpp"
+#include "hinf/sim/scenario.hpp"
+#include "hinf/sim/two_body.hpp"
+
+namespace hinf::sim {
+
+// Gains of an LTI filter (SPEC eq. 12), obtained once before the runs (gains_source.hpp).
+struct LtiGains {
+  Matrix A_F, B_F, C_F;
+};
+
+// Everything the runs share, prepared once.
+struct RunSetup {
+  Scenario scenario;
+  std::optional<LtiGains> hinf, published;
+};
+
+// A run that cannot continue (non-finite truth, thrust from a diverged estimate): exit 4.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Noise stream indices inside a run: stream seed = derive_seed(run seed, index).
+enum NoiseStream : std::uint64_t { kProcessX = 0, kProcessY, kProcessZ, kRange, kAzimuth, kElevation };
+
+struct FilterTrack {
+  std::string name;
+  std::vector<Vector6> estimate;  // one per step; NaN after divergence
+  std::optional<long> diverged_at;
+  FilterHealth health;
+};
+
+struct Trajectory {
+  std::vector<double> t;
+  std::vector<Vector6> truth;
+  std::vector<MeasurementSample> measurement;
+  std::vector<Vector3> thrust;  // u(k), N, applied over [t_k, t_{k+1})
+  std::vector<FilterTrack> filters;
+};
+
+struct FilterOutcome {
+  std::string name;
+  FilterMetrics metrics;
+  FilterHealth health;
+};
+
+struct RunResult {
+  std::uint64_t seed = 0;
+  std::vector<FilterOutcome> filters;    // in the order of filter_names()
+  std::optional<Trajectory> trajectory;  // kept if asked for
+};
+
+// hinf, published, ekf, ekf_no_control, rekf — those selected, in this order.
+std::vector<std::string> filter_names(const Scenario& scenario);
+
+RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_trajectory);
+
+}  // namespace hinf::sim

@@ -1,0 +1,156 @@
+#include "hinf/sim/estimator.hpp"
+
+#include <hinf/runtime/ekf.hpp>
+#include <hinf/runtime/lti_filter.hpp>
+#include <hinf/runtime/models/cartesian_position.hpp>
+#include <hinf/runtime/models/hill.hpp>
+#include <hinf/runtime/models/range_azimuth_elevation.hpp>
+#include <hinf/runtime/rekf.hpp>
+#include <hinf/synth/hill_model.hpp>
+
+namespace hinf::sim {
+namespace {
+
+namespace rt = hinf::runtime;
+namespace models = hinf::runtime::models;
+
+class LtiEstimator final : public Estimator {
+ public:
+  LtiEstimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F, const Vector6& z0)
+      : filter_(A_F, B_F, C_F) {
+    filter_.init(z0);
+  }
+  Vector6 estimate(const MeasurementSample& y, double /*t*/) override {
+    return filter_.step(y.cartesian);  // z_F(k), then x_F(k+1) = A_F x_F(k) + B_F y(k)
+  }
+  void advance(const Vector3&, double) override {}
+
+ private:
+  rt::LtiFilter filter_;
+};
+
+using HillEkf = rt::Ekf<models::HillModel, models::CartesianPosition>;
+
+Eigen::Matrix<double, 6, 6> process_covariance(double sample_time, double acceleration_variance) {
+  Eigen::Matrix<double, 6, 3> G;
+  G << 0.5 * sample_time * sample_time * Eigen::Matrix3d::Identity(), sample_time * Eigen::Matrix3d::Identity();
+  return acceleration_variance * G * G.transpose();
+}
+
+class EkfEstimator final : public Estimator {
+ public:
+  EkfEstimator(const Scenario& s, const KalmanSettings& k)
+      : settings_(k),
+        sensor_(s.C_bl),
+        ekf_(models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time, models::Discretisation::ZeroOrderHold),
+             models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
+             Eigen::Matrix3d::Identity()) {
+    ekf_.init(s.initial_estimate, Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal());
+  }
+  Vector6 estimate(const MeasurementSample& y, double t) override {
+    ekf_.set_R(measurement_covariance(y));
+    const rt::FilterStatus status = ekf_.update(y.cartesian);
+    record(status == rt::FilterStatus::Ok, rt::to_string(status), t);
+    return ekf_.x();
+  }
+  void advance(const Vector3& thrust, double t) override {
+    const Vector3 u = settings_.knows_thrust ? thrust : Vector3::Zero();
+    const rt::FilterStatus status = ekf_.predict(u);
+    record(status == rt::FilterStatus::Ok, rt::to_string(status), t);
+  }
+
+ private:
+  Eigen::Matrix3d measurement_covariance(const MeasurementSample& y) const {
+    return sensor_.position_covariance(y.rae, std::sqrt(settings_.range_variance),
+                                       std::sqrt(settings_.azimuth_variance),
+                                       std::sqrt(settings_.elevation_variance)) +
+           settings_.r_floor * Eigen::Matrix3d::Identity();
+  }
+  KalmanSettings settings_;
+  models::RangeAzimuthElevation sensor_;
+  HillEkf ekf_;
+};
+
+}  // namespace
+
+std::unique_ptr<Estimator> make_lti_estimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F,
+                                              const Vector6& z0) {
+  return std::make_unique<LtiEstimator>(A_F, B_F, C_F, z0);
+}
+
+KalmanSettings kalman_settings_from(const Scenario& s, bool knows_thrust) {
+  KalmanSettings k;
+  k.acceleration_variance = channel_variance(s.process_noise);
+  k.range_variance = channel_variance(s.range_noise);
+  k.azimuth_variance = channel_variance(s.azimuth_noise);
+  k.elevation_variance = channel_variance(s.elevation_noise);
+  k.knows_thrust = knows_thrust;
+  return k;
+}
+
+std::unique_ptr<Estimator> make_ekf_estimator(const Scenario& scenario, const KalmanSettings& settings) {
+  return std::make_unique<EkfEstimator>(scenario, settings);
+}
+
+}  // namespace hinf::sim
+
+// ---- REKF (SPEC §4) ----------------------------------------------------------------
+
+namespace hinf::sim {
+namespace {
+
+using HillRekf = hinf::runtime::Rekf<hinf::runtime::models::HillModel, hinf::runtime::models::CartesianPosition>;
+
+class RekfEstimator final : public Estimator {
+ public:
+  RekfEstimator(const Scenario& s, const KalmanSettings& k, const RekfSettings& r)
+      : settings_(k), sensor_(s.C_bl), rekf_(make(s, k, r)) {
+    rekf_.init(s.initial_estimate, Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal());
+  }
+  Vector6 estimate(const MeasurementSample& y, double t) override {
+    rekf_.set_R(sensor_.position_covariance(y.rae, std::sqrt(settings_.range_variance),
+                                            std::sqrt(settings_.azimuth_variance),
+                                            std::sqrt(settings_.elevation_variance)) +
+                settings_.r_floor * Eigen::Matrix3d::Identity());
+    const auto status = rekf_.update(y.cartesian);
+    record(status == hinf::runtime::FilterStatus::Ok, hinf::runtime::to_string(status), t);
+    return rekf_.x();
+  }
+  void advance(const Vector3& thrust, double t) override {
+    const auto status = rekf_.predict(thrust);
+    record(status == hinf::runtime::FilterStatus::Ok, hinf::runtime::to_string(status), t);
+  }
+
+ private:
+  static HillRekf make(const Scenario& s, const KalmanSettings& k, const RekfSettings& r) {
+    // ΔF = T·H_a F(δ) E_a with F Fᵀ ≤ I (SPEC §3): A_k = T·H_a, L = E_a(δ̄), C_k = 0.
+    const Eigen::Matrix<double, 6, 6> A_k =
+        r.delta_bar > 0 ? Eigen::Matrix<double, 6, 6>(s.sample_time * hinf::synth::hill_uncertainty_H_a(s.orbital_rate))
+                        : Eigen::Matrix<double, 6, 6>::Zero();
+    const Eigen::Matrix<double, 6, 6> L =
+        r.delta_bar > 0 ? Eigen::Matrix<double, 6, 6>(hinf::synth::hill_uncertainty_E_a(s.orbital_rate, r.delta_bar))
+                        : Eigen::Matrix<double, 6, 6>::Zero();
+    double gamma = r.gamma ? *r.gamma : 1.0;
+    if (!r.gamma && r.delta_bar > 0) {
+      const Eigen::Matrix<double, 6, 6> P0 = Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal();
+      const Eigen::Matrix<double, 6, 6> LPL = L * P0 * L.transpose();
+      gamma = std::sqrt(2.0 * Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(LPL).eigenvalues().maxCoeff());
+    }
+    return HillRekf(hinf::runtime::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time,
+                                                     hinf::runtime::models::Discretisation::ZeroOrderHold),
+                    hinf::runtime::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
+                    Eigen::Matrix3d::Identity(), gamma, A_k, Eigen::Matrix3d::Zero(), L);
+  }
+  KalmanSettings settings_;
+  hinf::runtime::models::RangeAzimuthElevation sensor_;
+  HillRekf rekf_;
+};
+
+}  // namespace
+
+std::unique_ptr<Estimator> make_rekf_estimator(const Scenario& scenario, const KalmanSettings& settings,
+                                               const RekfSettings& rekf) {
+  return std::make_unique<RekfEstimator>(scenario, settings, rekf);
+}
+
+}  // namespace hinf::sim

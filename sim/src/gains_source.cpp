@@ -1,0 +1,44 @@
+#include "hinf/sim/gains_source.hpp"
+
+#include <hinf/runtime_yaml/gains_file.hpp>
+#include <hinf/synth/config.hpp>
+#include <hinf/synth/synthesis.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace hinf::sim {
+
+ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
+  ObtainedGains out;
+  if (!source.gains_path.empty()) {
+    const auto file = hinf::runtime_yaml::load_gains_file(source.gains_path);
+    out.gains = {file.A_F, file.B_F, file.C_F};
+    out.gamma = file.gamma;
+    std::ifstream in(source.gains_path, std::ios::binary);
+    std::ostringstream os;
+    os << in.rdbuf();
+    out.gains_yaml = os.str();
+    out.origin = "gains file " + source.gains_path;
+    return out;
+  }
+#if !HINF_SIM_SYNTHESIS
+  throw hinf::synth::Error(hinf::synth::ErrorCode::InvalidInput,
+                           "'synthesize: " + source.synthesize_path +
+                               "': this hinf-sim was built without on-the-fly synthesis (HINF_SIM_SYNTHESIS=OFF); "
+                               "use 'gains: FILE' from hinf-synth solve");
+#else
+  auto config = hinf::synth::load_config(source.synthesize_path);
+  if (verbose) config.settings.verbose = true;
+  if (verbose) std::cerr << "hinf-sim: synthesising from " << source.synthesize_path << " ...\n";
+  const hinf::synth::SynthesisResult r = hinf::synth::synthesize(config.plant, config.settings);
+  out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F};
+  out.gamma = r.gamma;
+  out.gains_yaml = format_gains_yaml(out.gains, r.gamma, "hinf-sim (synthesised on the fly)", config.sha256);
+  out.origin = "synthesised from " + source.synthesize_path;
+  return out;
+#endif
+}
+
+}  // namespace hinf::sim

@@ -1,0 +1,50 @@
+#include "hinf/sim/monte_carlo.hpp"
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "hinf/sim/rng.hpp"
+
+namespace hinf::sim {
+
+std::uint64_t run_seed(std::uint64_t seed, long run_index) {
+  return derive_seed(seed, static_cast<std::uint64_t>(run_index));
+}
+
+std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
+                                       const ProgressCallback& progress) {
+  std::vector<RunResult> results(static_cast<std::size_t>(runs));
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
+  std::atomic<long> next{0};
+  std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  long done = 0;
+
+  auto worker = [&]() {
+    for (;;) {
+      const long i = next.fetch_add(1);
+      if (i >= runs || failed.load()) return;
+      try {
+        results[static_cast<std::size_t>(i)] = simulate_run(setup, run_seed(seed, i), i == 0);
+      } catch (...) {
+        errors[static_cast<std::size_t>(i)] = std::current_exception();
+        failed.store(true);
+      }
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      ++done;
+      if (progress) progress(done, runs);
+    }
+  };
+  const int n_threads = static_cast<int>(std::min<long>(std::max(1, jobs), std::max<long>(1, runs)));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < n_threads; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
+}
+
+}  // namespace hinf::sim

@@ -1,0 +1,125 @@
+#include "hinf/sim/plots.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "hinf/sim/atomic_file.hpp"
+
+extern char** environ;
+
+namespace hinf::sim {
+namespace {
+
+const std::map<std::string, std::string> kColour = {
+    {"hinf", "#d62728"}, {"published", "#ff7f0e"}, {"ekf", "#1f77b4"}, {"ekf_no_control", "#7f7f7f"}, {"rekf", "#2ca02c"}};
+
+std::string colour(const std::string& name) {
+  const auto it = kColour.find(name);
+  return it == kColour.end() ? "#000000" : it->second;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+int run_gnuplot(const std::string& script) {
+  std::string prog = "gnuplot";
+  char* argv[] = {prog.data(), const_cast<char*>(script.c_str()), nullptr};
+  pid_t pid;
+  if (posix_spawnp(&pid, "gnuplot", nullptr, nullptr, argv, environ) != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+std::vector<std::string> write_plots(const std::string& dir, const Trajectory& tr, const std::string& title) {
+  namespace fs = std::filesystem;
+  const std::vector<std::string> names = {"position_error.png", "velocity_error.png", "thrust.png"};
+  const std::string data = temporary_path_for((fs::path(dir) / "plot.dat").string());
+  const std::string script = temporary_path_for((fs::path(dir) / "plot.gp").string());
+  std::vector<std::string> tmp_png;
+  for (const auto& n : names) tmp_png.push_back(temporary_path_for((fs::path(dir) / n).string()));
+  auto cleanup = [&]() {
+    std::remove(data.c_str());
+    std::remove(script.c_str());
+    for (const auto& p : tmp_png) std::remove(p.c_str());
+  };
+
+  // Data: t, thrust (3), then |e_p|, |e_v| per filter.
+  {
+    std::ostringstream os;
+    os.precision(9);
+    for (std::size_t k = 0; k < tr.t.size(); ++k) {
+      os << tr.t[k] << ' ' << tr.thrust[k](0) << ' ' << tr.thrust[k](1) << ' ' << tr.thrust[k](2);
+      for (const auto& f : tr.filters) {
+        const Vector6 e = f.estimate[k] - tr.truth[k];
+        if (e.allFinite()) os << ' ' << e.head<3>().norm() << ' ' << e.tail<3>().norm();
+        else os << " NaN NaN";
+      }
+      os << '\n';
+    }
+    try {
+      write_file_atomic(data, os.str());
+    } catch (const OutputError& e) {
+      cleanup();
+      throw PlotError(std::string("plot data: ") + e.what());
+    }
+  }
+
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\n"
+     << "set grid\nset key outside right top\nset xlabel 'time (s)'\n"
+     << "set datafile missing 'NaN'\n";
+  auto error_plot = [&](int which, const std::string& png, const std::string& ylabel, const std::string& what) {
+    gp << "set output " << quoted(png) << "\nset logscale y\nset format y '10^{%L}'\n"
+       << "set ylabel " << quoted(ylabel) << "\nset title " << quoted(title + ": " + what) << " noenhanced\n"
+       << "plot ";
+    for (std::size_t f = 0; f < tr.filters.size(); ++f) {
+      const int col = 5 + 2 * static_cast<int>(f) + which;
+      gp << (f ? ", " : "") << quoted(data) << " using 1:" << col << " with lines lw 1.5 lc rgb "
+         << quoted(colour(tr.filters[f].name)) << " title " << quoted(tr.filters[f].name) << " noenhanced";
+    }
+    gp << "\nunset logscale y\nset format y '%g'\n";
+  };
+  error_plot(0, tmp_png[0], "position error |r̂ − r| (m)", "position error");
+  error_plot(1, tmp_png[1], "velocity error |v̂ − v| (m/s)", "velocity error");
+  gp << "set output " << quoted(tmp_png[2]) << "\nset ylabel 'thrust (N)'\nset title "
+     << quoted(title + ": thrust u = K x") << " noenhanced\n"
+     << "plot " << quoted(data) << " using 1:2 with lines lw 1.5 title 'F_x', " << quoted(data)
+     << " using 1:3 with lines lw 1.5 title 'F_y', " << quoted(data) << " using 1:4 with lines lw 1.5 title 'F_z'\n"
+     << "set output\n";
+  try {
+    write_file_atomic(script, gp.str());
+  } catch (const OutputError& e) {
+    cleanup();
+    throw PlotError(std::string("plot script: ") + e.what());
+  }
+  const int rc = run_gnuplot(script);
+  if (rc != 0) {
+    cleanup();
+    throw PlotError(rc < 0 ? "cannot run gnuplot (is the gnuplot package installed?); use --no-plots to skip plots"
+                           : "gnuplot failed with exit status " + std::to_string(rc));
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::error_code ec;
+    if (!fs::exists(tmp_png[i], ec) || fs::file_size(tmp_png[i], ec) == 0) {
+      cleanup();
+      throw PlotError("gnuplot produced no output for " + names[i]);
+    }
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) commit_file(tmp_png[i], (fs::path(dir) / names[i]).string());
+  std::remove(data.c_str());
+  std::remove(script.c_str());
+  return names;
+}
+
+}  // namespace hinf::sim

@@ -1,0 +1,33 @@
+// Reading a synthesis config (docs/file-formats.md, "Config"): strict YAML, either the
+// plant as matrices (`system:` + optional `uncertainty:`, SPEC §1) or the physical
+// Hill model (`hill:`, SPEC §3), plus optional `solver:` settings.
+//
+// Every failure is Error(InvalidInput) whose message names the file, the key path and,
+// for matrices, the expected and actual dimensions. An unstable plant is NOT a config
+// error (the solver's pre-flight reports it).
+#pragma once
+#include <optional>
+#include <string>
+
+#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/plant.hpp"
+#include "hinf/synth/settings.hpp"
+
+namespace hinf::synth {
+
+struct SynthConfig {
+  Plant plant;                     // validated (validate_plant)
+  std::optional<HillModel> hill;   // set iff the config used `hill:`
+  Settings settings;               // defaults overridden by `solver:`; validated
+  std::string sha256;              // SHA-256 of the config's exact bytes, lowercase hex
+  std::string path;                // the path (or source name) it was read from
+};
+
+// Reads the file's bytes, hashes them and parses them.
+SynthConfig load_config(const std::string& path);
+
+// Parses YAML text; `source_name` is used in messages and stored as `path`;
+// sha256 is the hash of `yaml_text`.
+SynthConfig parse_config(const std::string& yaml_text, const std::string& source_name);
+
+}  // namespace hinf::synth

@@ -1,0 +1,37 @@
+// Solver settings: a flat struct, one documented default per field, one validate().
+#pragma once
+#include <string>
+
+namespace hinf::synth {
+
+struct Settings {
+  // Strictness margin of the LMI, relative to the equilibrated problem: the solver
+  // enforces −M(x) ⪰ lmi_margin·I (USER-PAIN #2, #3). Refused below 100·relative_gap_tol·1e-3.
+  double lmi_margin = 1e-9;
+  // Stop when the barrier's duality gap (N+1)/t is below this fraction of γ².
+  double relative_gap_tol = 1e-7;
+  // Factor by which the barrier parameter t grows between centring steps.
+  double barrier_growth = 20.0;
+  // Feasibility radius on the equilibrated variables (LMI Lab's "feasradius").
+  double feasibility_radius = 1e8;
+  // Newton iterations allowed in one centring step (Ipopt's max_iter).
+  int max_newton_per_centering = 60;
+  // Total Newton iterations allowed in one solve (phase I + phase II).
+  int max_iterations = 600;
+  // Wall-clock limit for one solve, seconds.
+  double time_limit_s = 600.0;
+  // Multiply the optimal γ by (1 + gamma_backoff) before recovering the filter;
+  // the back-off buys margin and a better-conditioned filter (USER-PAIN #6). 0 = off.
+  double gamma_backoff = 0.0;
+  // Number of random admissible F(k) sampled in the Schur-stability check.
+  int stability_samples = 64;
+  // Seed for that sampling (checks are deterministic).
+  unsigned seed = 1;
+  // Print an iteration table to stderr.
+  bool verbose = false;
+
+  // Throws Error(InvalidInput) naming the offending field and value.
+  void validate() const;
+};
+
+}  // namespace hinf::synth

@@ -1,0 +1,48 @@
+// Thin Ipopt adapter: one centring step of the barrier method, i.e. the unconstrained
+// minimisation of LogDetBarrier::f_t by Ipopt's Newton iteration with exact gradient and
+// dense Hessian (lower triangle). Ipopt stops when our Newton-decrement criterion is
+// met (intermediate callback) — the affine-invariant test of barrier methods.
+#pragma once
+#include <Eigen/Dense>
+#include <string>
+
+#include "barrier/log_det_barrier.hpp"
+
+namespace hinf::barrier {
+
+struct CenteringResult {
+  Eigen::VectorXd z;
+  int iterations = 0;
+  double lambda2 = 0;  // Newton decrement² at z
+  bool centred = false;
+  bool stopped_early = false;  // early-exit predicate met (phase I found s < 0)
+  bool noise_limited = false;  // accepted with λ² at its round-off floor (≤ 0.09)
+  std::string ipopt_status;
+};
+
+struct CenteringOptions {
+  double lambda2_tol = 1e-3;      // stop when λ²/2 ≤ this (λ ≈ 0.045: gap bound intact)
+  int max_iterations = 60;
+  double max_cpu_time = 600;
+  int stall_iterations = 4;       // λ² not halved for this many iterations: stalled
+  bool phase1_stop_negative = false;  // phase I: stop as soon as s < 0 at an iterate
+  bool derivative_test = false;   // run Ipopt's second-order derivative test (tests only)
+};
+
+class IpoptCentering {
+ public:
+  IpoptCentering();
+  ~IpoptCentering();
+  IpoptCentering(const IpoptCentering&) = delete;
+  IpoptCentering& operator=(const IpoptCentering&) = delete;
+
+  // Minimises barrier.f_t from z0 (which must be inside the domain).
+  CenteringResult run(LogDetBarrier& barrier, const Eigen::VectorXd& z0, const CenteringOptions& opt);
+  static const char* version();
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+
+}  // namespace hinf::barrier

@@ -1,0 +1,134 @@
+#include "barrier/log_det_barrier.hpp"
+
+#include <cmath>
+
+namespace hinf::barrier {
+
+LogDetBarrier::LogDetBarrier(const lmi::LmiProblem& lmi, Eigen::VectorXd c, double margin,
+                             double radius, bool phase1)
+    : lmi_(lmi), c_(std::move(c)), margin_(margin), radius_(radius), phase1_(phase1),
+      n_(lmi.num_params()), N_(lmi.order()) {}
+
+static bool same(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && (a.array() == b.array()).all();
+}
+
+bool LogDetBarrier::factor(const Eigen::VectorXd& z) {
+  if (have_factor_ && same(z, z_factored_)) return factor_ok_;
+  have_factor_ = true;
+  have_derivs_ = false;
+  z_factored_ = z;
+  factor_ok_ = false;
+  if (!z.allFinite()) return false;
+  const auto x = z.head(n_);
+  const double r2 = radius_ * radius_ - x.squaredNorm();
+  if (!(r2 > 0)) return false;
+  ball_ = std::log(r2);
+  slack_ = -lmi_.evaluate(x);
+  slack_.diagonal().array() -= margin_;
+  if (phase1_) slack_.diagonal().array() += z(n_);
+  llt_.compute(slack_);
+  if (llt_.info() != Eigen::Success) return false;
+  const auto& Lf = llt_.matrixLLT();
+  double ld = 0;
+  for (int i = 0; i < N_; ++i) {
+    const double d = Lf(i, i);
+    if (!(d > 0) || !std::isfinite(d)) return false;
+    ld += std::log(d);
+  }
+  logdet_ = 2 * ld;
+  factor_ok_ = true;
+  return true;
+}
+
+double LogDetBarrier::linear_objective(const Eigen::VectorXd& z) const {
+  return phase1_ ? z(n_) : c_.dot(z.head(n_));
+}
+
+bool LogDetBarrier::value(const Eigen::VectorXd& z, double& f) {
+  if (!factor(z)) return false;
+  f = t_ * linear_objective(z) - logdet_ - ball_;
+  return std::isfinite(f);
+}
+
+bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
+  if (!factor(z)) return false;
+  if (have_derivs_ && same(z, z_derivs_)) return true;
+  const int d = dim();
+  W_ = llt_.solve(Eigen::MatrixXd::Identity(N_, N_));
+  W_ = 0.5 * (W_ + W_.transpose());
+  // ∂φ/∂xᵢ = tr(W Mᵢ) with Mᵢ the derivative of M; the slack is −M, so
+  // ∂(−log det slack)/∂xᵢ = tr(slack⁻¹ Mᵢ) = tr(W Mᵢ).
+  Eigen::VectorXd gx;
+  lmi_.trace_products(W_, gx);
+  lmi_.hessian(W_, Hs_);
+  grad_phi_.resize(d);
+  hess_.resize(d, d);
+  grad_phi_.head(n_) = gx;
+  hess_.topLeftCorner(n_, n_) = Hs_;
+  if (phase1_) {
+    // slack depends on s through +s·I: ∂/∂s = −tr(W), ∂²/∂s² = tr(W W),
+    // ∂²/∂xᵢ∂s = tr(W Mᵢ W (−I))·(−1)... = −tr(W² Mᵢ)
+    const Eigen::MatrixXd W2 = W_ * W_;
+    Eigen::VectorXd gs;
+    lmi_.trace_products(W2, gs);
+    grad_phi_(n_) = -W_.trace();
+    hess_(n_, n_) = W_.squaredNorm();
+    hess_.block(0, n_, n_, 1) = -gs;
+    hess_.block(n_, 0, 1, n_) = -gs.transpose();
+  }
+  // feasibility ball: −log(ρ² − ‖x‖²)
+  const auto x = z.head(n_);
+  const double r2 = radius_ * radius_ - x.squaredNorm();
+  grad_phi_.head(n_) += 2.0 / r2 * x;
+  hess_.topLeftCorner(n_, n_).diagonal().array() += 2.0 / r2;
+  hess_.topLeftCorner(n_, n_).noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
+  z_derivs_ = z;
+  have_derivs_ = true;
+  return grad_phi_.allFinite() && hess_.allFinite();
+}
+
+bool LogDetBarrier::gradient(const Eigen::VectorXd& z, Eigen::VectorXd& g) {
+  if (!derivatives(z)) return false;
+  g = grad_phi_;
+  if (phase1_) g(n_) += t_;
+  else g.head(n_) += t_ * c_;
+  return true;
+}
+
+bool LogDetBarrier::hessian(const Eigen::VectorXd& z, Eigen::MatrixXd& H) {
+  if (!derivatives(z)) return false;
+  H = hess_;
+  return true;
+}
+
+bool LogDetBarrier::newton_decrement2(const Eigen::VectorXd& z, double& lambda2) {
+  Eigen::VectorXd g;
+  if (!gradient(z, g)) return false;
+  // Near the end of the path the Hessian's condition number grows like t²; a
+  // pivoted LDLᵀ still gives the decrement where a plain Cholesky may break down.
+  Eigen::LDLT<Eigen::MatrixXd> H(hess_);
+  if (H.info() != Eigen::Success) return false;
+  lambda2 = g.dot(H.solve(g));
+  return std::isfinite(lambda2) && lambda2 >= 0;
+}
+
+bool LogDetBarrier::path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) {
+  if (!derivatives(z)) return false;
+  Eigen::VectorXd cz = Eigen::VectorXd::Zero(dim());
+  if (phase1_) cz(n_) = 1.0;
+  else cz.head(n_) = c_;
+  Eigen::LDLT<Eigen::MatrixXd> H(hess_);
+  if (H.info() != Eigen::Success) return false;
+  dz = -H.solve(cz);
+  return dz.allFinite();
+}
+
+double LogDetBarrier::min_slack_eigenvalue(const Eigen::VectorXd& z) const {
+  Eigen::MatrixXd S = -lmi_.evaluate(z.head(n_));
+  S.diagonal().array() -= margin_;
+  if (phase1_) S.diagonal().array() += z(n_);
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S, Eigen::EigenvaluesOnly).eigenvalues()(0);
+}
+
+}  // namespace hinf::barrier

@@ -1,0 +1,63 @@
+// The log-barrier objective of the path-following method (SPEC §2, solver notes):
+//   phase II:  f_t(x)    = t·cᵀx − log det(−M(x) − εI)          − log(ρ² − ‖x‖²)
+//   phase I:   f_t(x, s) = t·s   − log det(−M(x) − εI + s·I)    − log(ρ² − ‖x‖²)
+// ε is the strictness margin (USER-PAIN #2/#3), ρ the feasibility radius (as LMI Lab's
+// feasradius) that keeps the barrier bounded below. Knows nothing of Ipopt.
+#pragma once
+#include <Eigen/Dense>
+
+#include "lmi/lmi_problem.hpp"
+
+namespace hinf::barrier {
+
+class LogDetBarrier {
+ public:
+  LogDetBarrier(const lmi::LmiProblem& lmi, Eigen::VectorXd c, double margin, double radius,
+                bool phase1);
+
+  int dim() const { return n_ + (phase1_ ? 1 : 0); }
+  bool phase1() const { return phase1_; }
+  void set_t(double t) { t_ = t; }
+  double t() const { return t_; }
+
+  // Each returns false when z is outside the barrier's domain (the Cholesky factor
+  // of the slack fails or ‖x‖ ≥ ρ); Ipopt then shortens its step.
+  bool value(const Eigen::VectorXd& z, double& f);
+  bool gradient(const Eigen::VectorXd& z, Eigen::VectorXd& g);
+  bool hessian(const Eigen::VectorXd& z, Eigen::MatrixXd& H);
+  // Newton decrement squared λ² = gᵀH⁻¹g at z (the centring criterion).
+  bool newton_decrement2(const Eigen::VectorXd& z, double& lambda2);
+  // Central-path tangent dz/dt = −H⁻¹∇(linear objective) at z.
+  bool path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
+
+  double linear_objective(const Eigen::VectorXd& z) const;
+  // W = (slack)⁻¹ at the last factored point (for the dual bound).
+  const Eigen::MatrixXd& W() const { return W_; }
+  bool inside(const Eigen::VectorXd& z) { return factor(z); }
+  // Smallest eigenvalue of −M(x) − εI (+sI) at z (diagnostics).
+  double min_slack_eigenvalue(const Eigen::VectorXd& z) const;
+
+ private:
+  bool factor(const Eigen::VectorXd& z);
+  bool derivatives(const Eigen::VectorXd& z);
+
+  const lmi::LmiProblem& lmi_;
+  Eigen::VectorXd c_;
+  double margin_, radius_;
+  bool phase1_;
+  int n_;
+  int N_;
+  double t_ = 1.0;
+
+  // cache keyed by z
+  Eigen::VectorXd z_factored_, z_derivs_;
+  bool have_factor_ = false, have_derivs_ = false, factor_ok_ = false;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::MatrixXd slack_, W_;
+  double logdet_ = 0, ball_ = 0;
+  Eigen::VectorXd grad_phi_;   // ∇ of the barrier part (no t·c term)
+  Eigen::MatrixXd hess_;       // ∇² of the barrier part
+  Eigen::MatrixXd Hs_;         // workspace
+};
+
+}  // namespace hinf::barrier

@@ -1,0 +1,178 @@
+#include "barrier/path_following.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "barrier/ipopt_centering.hpp"
+#include "barrier/log_det_barrier.hpp"
+
+namespace hinf::barrier {
+
+namespace {
+
+double PHASE1_RADIUS = 1e8;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c,
+                            const Settings& settings, const Eigen::VectorXd& x0_in,
+                            const IterationObserver& observer) {
+  const auto start = Clock::now();
+  const int n = lmi.num_params();
+  const int N = lmi.order();
+  const double nu = N + 1.0;  // barrier parameter: log-det of order N plus the ball
+  SdpSolution sol;
+  IpoptCentering ipopt;
+  Eigen::VectorXd x0 = x0_in.size() == n ? x0_in : Eigen::VectorXd::Zero(n);
+
+  auto remaining = [&] { return settings.time_limit_s - seconds_since(start); };
+  auto out_of_budget = [&](SdpSolution& s) {
+    if (s.newton_total >= settings.max_iterations) {
+      s.status = SolverStatus::MaxIterations;
+      s.detail = "iteration limit (" + std::to_string(settings.max_iterations) + ") reached";
+      return true;
+    }
+    if (remaining() <= 0) {
+      s.status = SolverStatus::TimeLimit;
+      s.detail = "time limit (" + std::to_string(settings.time_limit_s) + " s) reached";
+      return true;
+    }
+    return false;
+  };
+
+  // Runs one barrier (phase 1 or 2) along its central path. Returns the final z.
+  auto follow = [&](LogDetBarrier& b, Eigen::VectorXd z, int phase, bool& ok) -> Eigen::VectorXd {
+    ok = false;
+    // initial t (Boyd & Vandenberghe §11.3.1): argmin_t ‖t·c + ∇φ‖_{H⁻¹}
+    Eigen::VectorXd cz = Eigen::VectorXd::Zero(b.dim());
+    if (phase == 1) cz(n) = 1;
+    else cz.head(n) = c;
+    b.set_t(0.0);
+    Eigen::VectorXd gphi, dz;
+    double t = 0;
+    if (b.gradient(z, gphi) && b.path_tangent(z, dz)) {
+      const double chc = -cz.dot(dz);       // cᵀH⁻¹c
+      const double chg = -gphi.dot(dz);     // cᵀH⁻¹∇φ
+      if (chc > 0) t = -chg / chc;
+    }
+    const double obj0 = std::abs(b.linear_objective(z));
+    if (!(t > 0) || !std::isfinite(t)) t = nu / std::max(obj0, 1e-8);
+    t = std::max(t, 1e-3 * nu / std::max(obj0, 1e-8));
+    for (int k = 0;; ++k) {
+      b.set_t(t);
+      CenteringOptions co;
+      co.max_iterations = std::min(settings.max_newton_per_centering,
+                                   std::max(1, settings.max_iterations - sol.newton_total));
+      co.max_cpu_time = remaining();
+      co.phase1_stop_negative = (phase == 1);
+      const CenteringResult r = ipopt.run(b, z, co);
+      sol.newton_total += r.iterations;
+      if (phase == 1) sol.newton_phase1 += r.iterations;
+      ++sol.centerings;
+      z = r.z;
+      const double obj = b.linear_objective(z);
+      // gap bound (N+1)/t, plus λ²/t when centring stopped at the round-off floor
+      const double gap = (nu + (r.noise_limited ? r.lambda2 : 0.0)) / t;
+      if (observer)
+        observer({phase, k, t, obj, gap, r.iterations, r.lambda2, seconds_since(start)});
+      if (phase == 1 && (r.stopped_early || obj < 0)) {
+        ok = true;
+        return z;
+      }
+      if (!r.centred && !r.stopped_early) {
+        if (out_of_budget(sol)) return z;
+        sol.status = SolverStatus::NumericalError;
+        sol.detail = "centring failed in phase " + std::to_string(phase) + " at t = " +
+                     std::to_string(t) + " (Ipopt: " + r.ipopt_status + ")";
+        return z;
+      }
+      if (phase == 1 && obj - gap > 0) {
+        // certified: even the dual bound on s* is positive
+        sol.status = SolverStatus::Infeasible;
+        sol.phase1_s = obj;
+        sol.detail = "no strictly feasible point: min s = " + std::to_string(obj) + " > 0";
+        return z;
+      }
+      sol.t = t;
+      sol.gap = gap;
+      if (phase == 2 && gap <= settings.relative_gap_tol * std::max(std::abs(obj), 1e-12)) {
+        ok = true;
+        return z;
+      }
+      if (out_of_budget(sol)) return z;
+      // predictor along the central path: z + (t_new − t)·dz/dt, kept inside the domain
+      const double t_new = settings.barrier_growth * t;
+      if (b.path_tangent(z, dz)) {
+        double alpha = 1.0;
+        Eigen::VectorXd step = (t_new - t) * dz;
+        for (int tries = 0; tries < 40; ++tries, alpha *= 0.5) {
+          const Eigen::VectorXd zt = z + alpha * step;
+          if (b.inside(zt)) {
+            z = zt;
+            break;
+          }
+        }
+      }
+      t = t_new;
+    }
+  };
+
+  // ---- phase I --------------------------------------------------------------------
+  Eigen::VectorXd x = x0;
+  {
+    Eigen::MatrixXd M = lmi.evaluate(x);
+    M.diagonal().array() += settings.lmi_margin;
+    const double lmax = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M, Eigen::EigenvaluesOnly)
+                            .eigenvalues()(N - 1);
+    if (lmax >= 0) {
+      // A small ball in phase I keeps its analytic centre near x0 instead of at the
+      // feasibility radius (which would make phase II start with huge variables).
+      const double r1 = std::min(settings.feasibility_radius, PHASE1_RADIUS);
+      LogDetBarrier b1(lmi, c, settings.lmi_margin, r1, true);
+      Eigen::VectorXd z(n + 1);
+      z.head(n) = x;
+      z(n) = lmax + 1.0;
+      bool ok = false;
+      z = follow(b1, z, 1, ok);
+      sol.phase1_s = z(n);
+      if (!ok) {
+        if (sol.status == SolverStatus::NotRun) {
+          sol.status = SolverStatus::NumericalError;
+          sol.detail = "phase I did not find a feasible point";
+        }
+        sol.x = z.head(n);
+        sol.elapsed_s = seconds_since(start);
+        return sol;
+      }
+      x = z.head(n);
+    }
+  }
+  // ---- phase II -------------------------------------------------------------------
+  LogDetBarrier b2(lmi, c, settings.lmi_margin, settings.feasibility_radius, false);
+  bool ok = false;
+  x = follow(b2, x, 2, ok);
+  sol.x = x;
+  sol.objective = c.dot(x);
+  sol.elapsed_s = seconds_since(start);
+  if (!ok) {
+    if (sol.status == SolverStatus::NotRun) sol.status = SolverStatus::NumericalError;
+    return sol;
+  }
+  sol.status = SolverStatus::Solved;
+  sol.relative_gap = sol.gap / std::max(std::abs(sol.objective), 1e-300);
+  // Dual point Z = W/t: tr(Z Mᵢ) ≈ −cᵢ; dual objective tr(Z M₀) (margin removed).
+  if (b2.inside(x)) {
+    Eigen::VectorXd g;
+    b2.gradient(x, g);  // makes W current at x
+    sol.dual_bound = (b2.W().cwiseProduct(lmi.constant())).sum() / sol.t;
+  }
+  return sol;
+}
+
+}  // namespace hinf::barrier

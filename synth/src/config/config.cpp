@@ -1,0 +1,103 @@
+// parse_config: the top level of a config (docs/file-formats.md, "Config").
+#include <vector>
+
+#include "config/sections.hpp"
+#include "config/sha256.hpp"
+#include "config/yaml_reader.hpp"
+#include "hinf/synth/config.hpp"
+#include "hinf/synth/status.hpp"
+
+namespace hinf::synth {
+namespace {
+
+// The node a message's leading key path ("hill.chaser_mass = ...", "system.B: ...") names,
+// so that errors found after reading (validate_plant, validate_hill_model,
+// Settings::validate) still carry a file:line:col.
+YAML::Node node_of_message(const YAML::Node& root, const std::string& message) {
+  const std::string path = message.substr(0, message.find_first_of(" :"));
+  YAML::Node node = root;
+  size_t start = 0;
+  for (;;) {
+    const size_t dot = path.find('.', start);
+    const std::string key =
+        path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const YAML::Node& parent = node;  // const lookup: never inserts into the tree
+    if (key.empty() || !parent.IsMap() || !parent[key]) return YAML::Node();
+    node.reset(parent[key]);
+    if (dot == std::string::npos) return node;
+    start = dot + 1;
+  }
+}
+
+// Runs a check that throws Error(InvalidInput) with a key-path message and prefixes
+// the message with the location of that key in the file.
+template <typename Check>
+void located(const YamlReader& reader, const YAML::Node& root, Check&& check) {
+  try {
+    check();
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::InvalidInput) throw;
+    const YAML::Node at = node_of_message(root, e.what());
+    throw Error(ErrorCode::InvalidInput,
+                (at ? reader.location(at) : reader.source()) + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+SynthConfig parse_config(const std::string& yaml_text, const std::string& source_name) {
+  SynthConfig config;
+  config.path = source_name;
+  config.sha256 = sha256_hex(yaml_text);
+  const YamlReader reader(source_name);
+
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(yaml_text);
+  } catch (const YAML::ParserException& e) {  // includes DeepRecursion
+    throw Error(ErrorCode::InvalidInput, source_name + ":" + std::to_string(e.mark.line + 1) +
+                                             ":" + std::to_string(e.mark.column + 1) +
+                                             ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());
+  }
+  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull()))
+    throw Error(ErrorCode::InvalidInput,
+                source_name + ": empty config; expected a map with 'system' or 'hill'");
+  if (documents.size() > 1)
+    reader.fail(documents[1], "the file holds " + std::to_string(documents.size()) +
+                                  " YAML documents; a config is exactly one");
+  const YAML::Node root = documents[0];
+  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver"});
+
+  const YAML::Node system = root["system"];
+  const YAML::Node hill = root["hill"];
+  const YAML::Node uncertainty = root["uncertainty"];
+  if (system && hill)
+    reader.fail(hill, "the config has both 'system' and 'hill'; give exactly one");
+  if (!system && !hill)
+    reader.fail(root, "the config has neither 'system' nor 'hill'; give exactly one");
+  if (hill && uncertainty)
+    reader.fail(uncertainty, "'uncertainty' is only allowed with 'system'; with 'hill' the "
+                             "uncertainty comes from hill.delta_bar (SPEC §3)");
+
+  try {
+    if (system) {
+      config.plant = read_system_section(reader, system, uncertainty);
+      located(reader, root, [&] { validate_plant(config.plant); });
+    } else {
+      HillModel model = read_hill_section(reader, hill);
+      located(reader, root, [&] { config.plant = build_hill_plant(model); });
+      config.hill = std::move(model);
+    }
+    if (const YAML::Node solver = root["solver"]) {
+      config.settings = read_solver_section(reader, solver);
+      located(reader, root, [&] { config.settings.validate(); });
+    }
+  } catch (const YAML::Exception& e) {  // should not happen: every access is checked
+    throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());
+  }
+  return config;
+}
+
+}  // namespace hinf::synth

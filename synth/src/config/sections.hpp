@@ -1,0 +1,23 @@
+// The sections of a config file (docs/file-formats.md): each reads one top-level key.
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include "config/yaml_reader.hpp"
+#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/plant.hpp"
+#include "hinf/synth/settings.hpp"
+
+namespace hinf::synth {
+
+// `system:` (A, B, C, D, L) and the optional `uncertainty:` (H, E); `uncertainty` may be
+// an undefined node. Entries are checked here; shapes by validate_plant (the caller).
+Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
+                          const YAML::Node& uncertainty);
+
+// `hill:`; values and shapes are checked by validate_hill_model (the caller).
+HillModel read_hill_section(const YamlReader& reader, const YAML::Node& hill);
+
+// `solver:`; one key per field of Settings; ranges are checked by Settings::validate.
+Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver);
+
+}  // namespace hinf::synth

@@ -1,0 +1,32 @@
+// `solver:`: one key per field of hinf::synth::Settings, spelt as the field.
+#include "config/sections.hpp"
+
+namespace hinf::synth {
+
+Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver) {
+  reader.check_map(solver, "solver",
+                   {"lmi_margin", "relative_gap_tol", "barrier_growth", "feasibility_radius",
+                    "max_newton_per_centering", "max_iterations", "time_limit_s",
+                    "gamma_backoff", "stability_samples", "seed", "verbose"});
+  Settings s;
+  const auto number = [&](const char* key, double& field) {
+    if (const YAML::Node n = solver[key]) field = reader.number(n, std::string("solver.") + key);
+  };
+  const auto integer = [&](const char* key, int& field) {
+    if (const YAML::Node n = solver[key]) field = reader.integer(n, std::string("solver.") + key);
+  };
+  number("lmi_margin", s.lmi_margin);
+  number("relative_gap_tol", s.relative_gap_tol);
+  number("barrier_growth", s.barrier_growth);
+  number("feasibility_radius", s.feasibility_radius);
+  integer("max_newton_per_centering", s.max_newton_per_centering);
+  integer("max_iterations", s.max_iterations);
+  number("time_limit_s", s.time_limit_s);
+  number("gamma_backoff", s.gamma_backoff);
+  integer("stability_samples", s.stability_samples);
+  if (const YAML::Node n = solver["seed"]) s.seed = reader.unsigned_integer(n, "solver.seed");
+  if (const YAML::Node n = solver["verbose"]) s.verbose = reader.boolean(n, "solver.verbose");
+  return s;
+}
+
+}  // namespace hinf::synth

@@ -1,0 +1,39 @@
+// `system:` + `uncertainty:` (SPEC §1: x(k+1) = (A + H F E) x + B w, y = C x + D v, z = L x).
+#include "config/sections.hpp"
+
+namespace hinf::synth {
+namespace {
+
+Eigen::MatrixXd required_matrix(const YamlReader& reader, const YAML::Node& section,
+                                const std::string& section_name, const std::string& key,
+                                const char* what) {
+  const YAML::Node node = section[key];
+  const std::string path = child_path(section_name, key);
+  if (!node) reader.fail(section, "missing key '" + path + "' (" + what + ")");
+  return reader.matrix(node, path);
+}
+
+}  // namespace
+
+Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
+                          const YAML::Node& uncertainty) {
+  reader.check_map(system, "system", {"A", "B", "C", "D", "L"});
+  Plant plant;
+  plant.A = required_matrix(reader, system, "system", "A", "n x n state matrix");
+  plant.B = required_matrix(reader, system, "system", "B", "n x p process-noise input");
+  plant.C = required_matrix(reader, system, "system", "C", "m x n measurement matrix");
+  plant.D = required_matrix(reader, system, "system", "D", "m x q measurement-noise input");
+  plant.L = required_matrix(reader, system, "system", "L", "l x n estimated signal");
+  if (uncertainty) {
+    reader.check_map(uncertainty, "uncertainty", {"H", "E"});
+    const char* both = "Delta A = H F E needs both H and E";
+    plant.H = required_matrix(reader, uncertainty, "uncertainty", "H", both);
+    plant.E = required_matrix(reader, uncertainty, "uncertainty", "E", both);
+  } else {
+    plant.H = Eigen::MatrixXd::Zero(plant.A.rows(), 0);
+    plant.E = Eigen::MatrixXd::Zero(0, plant.A.cols());
+  }
+  return plant;
+}
+
+}  // namespace hinf::synth

@@ -1,0 +1,109 @@
+#include "model/theorem1.hpp"
+
+#include <cmath>
+
+namespace hinf::model {
+
+using Eigen::MatrixXd;
+using synth::Filter;
+using synth::Plant;
+
+double he_balance(const Plant& plant) {
+  if (!plant.uncertain()) return 1.0;
+  const double h = plant.H.norm(), e = plant.E.norm();
+  if (!(h > 0) || !(e > 0)) return 1.0;
+  return std::sqrt(e / h);
+}
+
+Theorem1Lmi build_theorem1(const Plant& P, double s) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
+  const bool unc = P.uncertain();
+  std::vector<int> blocks{n, n, n, n, p, q, l};
+  if (unc) blocks.push_back(P.j());
+  Theorem1Lmi T{lmi::LmiProblem(blocks), {}, {}, {}, {}, {}, {}, {}, s};
+  auto& L = T.lmi;
+  T.R = L.add_symmetric("R", n);
+  T.S = L.add_symmetric("S", n);
+  T.AFbar = L.add_full("AF_bar", n, n);
+  T.BFbar = L.add_full("BF_bar", n, m);
+  T.CFbar = L.add_full("CF_bar", l, n);
+  if (unc) T.lambda = L.add_scalar("lambda");
+  T.g = L.add_scalar("gamma_squared");
+
+  const MatrixXd In = MatrixXd::Identity(n, n);
+  const MatrixXd Hs = s * P.H, Es = P.E / s;
+  // row 1:  [ −R  −S  RA+B̄_F C  Ā_F  RB  B̄_F D  0  RH ]
+  L.add_term(0, 0, T.R, -In, In);
+  L.add_term(0, 1, T.S, -In, In);
+  L.add_term(0, 2, T.R, In, P.A);
+  L.add_term(0, 2, T.BFbar, In, P.C);
+  L.add_term(0, 3, T.AFbar, In, In);
+  L.add_term(0, 4, T.R, In, P.B);
+  L.add_term(0, 5, T.BFbar, In, P.D);
+  if (unc) L.add_term(0, 7, T.R, In, Hs);
+  // row 2:  [ ∗  −S  SA+B̄_F C  Ā_F  SB  B̄_F D  0  SH ]
+  L.add_term(1, 1, T.S, -In, In);
+  L.add_term(1, 2, T.S, In, P.A);
+  L.add_term(1, 2, T.BFbar, In, P.C);
+  L.add_term(1, 3, T.AFbar, In, In);
+  L.add_term(1, 4, T.S, In, P.B);
+  L.add_term(1, 5, T.BFbar, In, P.D);
+  if (unc) L.add_term(1, 7, T.S, In, Hs);
+  // row 3:  [ ∗  ∗  −R+λEᵀE  −S  0  0  Lᵀ  0 ]
+  L.add_term(2, 2, T.R, -In, In);
+  if (unc) L.add_scalar_term(2, 2, T.lambda, Es.transpose() * Es);
+  L.add_term(2, 3, T.S, -In, In);
+  L.add_constant(2, 6, P.L.transpose());
+  // row 4:  [ ∗  ∗  ∗  −S  0  0  −C̄_Fᵀ  0 ]
+  L.add_term(3, 3, T.S, -In, In);
+  L.add_term(3, 6, T.CFbar, -In, MatrixXd::Identity(l, l), /*transpose=*/true);
+  // rows 5–8: −gI, −gI, −I, −λI
+  L.add_scalar_term(4, 4, T.g, -MatrixXd::Identity(p, p));
+  L.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
+  L.add_constant(6, 6, -MatrixXd::Identity(l, l));
+  if (unc) L.add_scalar_term(7, 7, T.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  return T;
+}
+
+AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
+  const bool unc = P.uncertain();
+  const int n2 = 2 * n;
+  // error system, SPEC eqs. (13)–(15)
+  MatrixXd A0 = MatrixXd::Zero(n2, n2);
+  A0.topLeftCorner(n, n) = P.A;
+  A0.bottomLeftCorner(n, n) = F.B_F * P.C;
+  A0.bottomRightCorner(n, n) = F.A_F;
+  MatrixXd Bb = MatrixXd::Zero(n2, p + q);
+  Bb.topLeftCorner(n, p) = P.B;
+  Bb.bottomRightCorner(n, q) = F.B_F * P.D;
+  MatrixXd Cb(l, n2);
+  Cb << P.L, -F.C_F;
+  std::vector<int> blocks{n2, n2, p + q, l};
+  if (unc) blocks.push_back(P.j());
+  AnalysisLmi A{lmi::LmiProblem(blocks), {}, {}, {}, s};
+  auto& L = A.lmi;
+  A.P = L.add_symmetric("P", n2);
+  if (unc) A.lambda = L.add_scalar("lambda");
+  A.g = L.add_scalar("gamma_squared");
+  const MatrixXd I2 = MatrixXd::Identity(n2, n2);
+  L.add_term(0, 0, A.P, -I2, I2);
+  L.add_term(0, 1, A.P, I2, A0);
+  L.add_term(0, 2, A.P, I2, Bb);
+  L.add_term(1, 1, A.P, -I2, I2);
+  L.add_constant(1, 3, Cb.transpose());
+  L.add_scalar_term(2, 2, A.g, -MatrixXd::Identity(p + q, p + q));
+  L.add_constant(3, 3, -MatrixXd::Identity(l, l));
+  if (unc) {
+    MatrixXd Hb = MatrixXd::Zero(n2, P.j());
+    Hb.topRows(n) = s * P.H;
+    MatrixXd Eb = MatrixXd::Zero(P.k(), n2);
+    Eb.leftCols(n) = P.E / s;
+    L.add_term(0, 4, A.P, I2, Hb);
+    L.add_scalar_term(1, 1, A.lambda, Eb.transpose() * Eb);
+    L.add_scalar_term(4, 4, A.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  }
+  return A;
+}
+
+}  // namespace hinf::model

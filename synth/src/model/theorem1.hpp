@@ -1,0 +1,38 @@
+// Theorem 1 of seed 000 (SPEC §2, LMI (20)) written once, block by block, as data for
+// the generic LMI layer; and the robust analysis LMI of Lemma 1 (eq. 17) with the
+// S-procedure for a fixed filter (SPEC §2, check 4).
+#pragma once
+#include "hinf/synth/plant.hpp"
+#include "lmi/lmi_problem.hpp"
+
+namespace hinf::model {
+
+// H/E balance: s with ‖sH‖ = ‖E/s‖ (SPEC §3: leaves ΔA = HFE unchanged). 1 if no uncertainty.
+double he_balance(const synth::Plant& plant);
+
+struct Theorem1Lmi {
+  lmi::LmiProblem lmi;
+  lmi::VarId R, S, AFbar, BFbar, CFbar, lambda, g;  // lambda invalid without uncertainty
+  double he_scale = 1;  // the LMI uses H' = sH, E' = E/s, λ' = λ s²
+};
+
+// Blocks n, n, n, n, p, q, l, j (the last only with uncertainty).
+Theorem1Lmi build_theorem1(const synth::Plant& plant, double he_scale);
+
+struct AnalysisLmi {
+  lmi::LmiProblem lmi;
+  lmi::VarId P, lambda, g;
+  double he_scale = 1;
+};
+
+// Blocks 2n, 2n, p+q, l, j:
+//   [ −P   PĀ₀        PB̄    0    PH̄  ]
+//   [  ∗  −P+λĒᵀĒ     0     C̄ᵀ   0   ]
+//   [  ∗   ∗         −gI    0    0   ]   < 0
+//   [  ∗   ∗          ∗    −I    0   ]
+//   [  ∗   ∗          ∗     ∗   −λI  ]
+// with the error system of SPEC eqs. (13)–(15), H̄ = [H; 0], Ē = [E, 0].
+AnalysisLmi build_analysis_lmi(const synth::Plant& plant, const synth::Filter& filter,
+                               double he_scale);
+
+}  // namespace hinf::model

@@ -1,0 +1,59 @@
+// Helpers for the codegen tests: temporary directories, running commands,
+// seeded random gains, an independent reference implementation of SPEC eq. (12).
+#pragma once
+#include <Eigen/Dense>
+#include <cstdint>
+#include <string>
+
+#include "hinf/runtime_yaml/gains_file.hpp"
+
+namespace hinf::test {
+
+// A fresh directory under /tmp, removed (with its contents) on destruction.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::string& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+struct CommandResult {
+  int exit_code;       // -1 if the command did not exit normally
+  std::string output;  // stdout and stderr together
+};
+CommandResult run(const std::string& command);
+
+std::string read_text(const std::string& path);
+void write_text(const std::string& path, const std::string& text);
+// Sorted names of the entries of a directory ("" for a missing directory).
+std::string list_dir(const std::string& path);
+
+// Seeded random filter of the given size; A_F scaled to spectral radius 0.9 so a
+// few hundred steps stay bounded; entries of mixed magnitudes.
+runtime_yaml::GainsFile random_gains(std::uint64_t seed, int n, int m, int l);
+// A gains file (format hinf-gains/1) with 17 significant digits.
+std::string gains_yaml(const runtime_yaml::GainsFile& g);
+
+// Deterministic inputs uniform in [-1, 1) (std::mt19937_64, own mapping).
+Eigen::MatrixXd random_matrix(std::uint64_t seed, Eigen::Index rows, Eigen::Index cols);
+
+// Eq. (12) in double with an Eigen loop: x(0) = pinv(C) z0 (pinv by JacobiSVD),
+// row k of the result = z(k) = C x(k), x(k+1) = A x(k) + B y(k).
+Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                                  const Eigen::MatrixXd& C, const Eigen::VectorXd& z0,
+                                  const Eigen::MatrixXd& Y);
+Eigen::MatrixXd pinv_svd(const Eigen::MatrixXd& C);
+
+// Rounds every entry to float (and back).
+Eigen::MatrixXd to_float(const Eigen::MatrixXd& m);
+
+// Strict flags for the generated C (the brief's list; float adds -Wfloat-conversion).
+std::string strict_c_flags(bool is_float);
+
+}  // namespace hinf::test

@@ -1,0 +1,548 @@
+// Generated C code: compiled with gcc and clang under strict warnings, linked into
+// a harness and compared with an independent Eigen evaluation of SPEC eq. (12);
+// no heap / libm symbols; cppcheck clean; two filters in one binary; deterministic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "codegen_test_support.hpp"
+#include "hinf/runtime/lti_filter.hpp"
+#include "hinf/runtime_yaml/gains_file.hpp"
+#include "hinf/synth/codegen.hpp"
+#include "hinf/synth/status.hpp"
+
+namespace {
+
+using hinf::runtime_yaml::GainsFile;
+using hinf::synth::CodegenOptions;
+using hinf::test::TempDir;
+using Real = CodegenOptions::Real;
+
+constexpr int kSteps = 250;
+
+std::vector<std::string> compilers() {
+  std::vector<std::string> c;
+  if (std::string(HINF_TEST_GCC).size() > 0) c.emplace_back(HINF_TEST_GCC);
+  if (std::string(HINF_TEST_CLANG).size() > 0) c.emplace_back(HINF_TEST_CLANG);
+  return c;
+}
+
+std::string compiler_tag(const std::string& cc) {
+  return cc.find("clang") != std::string::npos ? "clang" : "gcc";
+}
+
+// A C program that reads z0 and then y(0), y(1), ... from a text file and prints
+// z(k) for each step, one line per step, 17 significant digits.
+std::string harness_source(const std::string& p, bool is_float) {
+  std::string P = p;
+  for (auto& c : P) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string fmt = is_float ? "%f" : "%lf";
+  std::ostringstream os;
+  os << "#include <stdio.h>\n#include \"" << p << ".h\"\n"
+     << "int main(int argc, char **argv)\n{\n"
+     << "  " << p << "_state s;\n  " << p << "_real z0[" << P << "_NZ];\n"
+     << "  " << p << "_real y[" << P << "_NY];\n  " << p << "_real z[" << P << "_NZ];\n"
+     << "  FILE *f;\n"
+     << "  if (argc != 2) { return 2; }\n"
+     << "  f = fopen(argv[1], \"r\");\n  if (f == NULL) { return 2; }\n"
+     << "  for (int i = 0; i < " << P << "_NZ; ++i) {\n"
+     << "    if (fscanf(f, \"" << fmt << "\", &z0[i]) != 1) { fclose(f); return 2; }\n  }\n"
+     << "  " << p << "_init(&s, z0);\n"
+     << "  for (;;) {\n    int i;\n"
+     << "    for (i = 0; i < " << P << "_NY; ++i) {\n"
+     << "      if (fscanf(f, \"" << fmt << "\", &y[i]) != 1) { break; }\n    }\n"
+     << "    if (i < " << P << "_NY) { break; }\n"
+     << "    " << p << "_step(&s, y, z);\n"
+     << "    for (i = 0; i < " << P << "_NZ; ++i) { printf(\"%.17g \", (double)z[i]); }\n"
+     << "    printf(\"\\n\");\n  }\n  fclose(f);\n  return 0;\n}\n";
+  return os.str();
+}
+
+Eigen::MatrixXd parse_outputs(const std::string& text, Eigen::Index rows, Eigen::Index cols) {
+  std::istringstream in(text);
+  Eigen::MatrixXd Z(rows, cols);
+  for (Eigen::Index k = 0; k < rows; ++k)
+    for (Eigen::Index i = 0; i < cols; ++i) {
+      std::string tok;
+      if (!(in >> tok)) throw std::runtime_error("harness output too short");
+      Z(k, i) = std::strtod(tok.c_str(), nullptr);
+    }
+  return Z;
+}
+
+// Undefined symbols of an object file.
+std::set<std::string> undefined_symbols(const std::string& object) {
+  const auto r = hinf::test::run(std::string(HINF_TEST_NM) + " -u " + object);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::set<std::string> syms;
+  std::istringstream in(r.output);
+  std::string kind, name;
+  while (in >> kind >> name) syms.insert(name);
+  return syms;
+}
+
+void expect_no_heap_or_libm(const std::string& object) {
+  static const std::set<std::string> forbidden{
+      "malloc", "calloc", "realloc", "free", "aligned_alloc", "posix_memalign", "alloca",
+      "sqrt", "sqrtf", "fabs", "fabsf", "sin", "sinf", "cos", "cosf", "exp", "expf", "log",
+      "logf", "pow", "powf", "floor", "floorf", "ceil", "ceilf", "fma", "fmaf", "round",
+      "roundf", "tan", "atan2", "hypot"};
+  // Only the block moves a compiler may emit for plain loops are acceptable.
+  static const std::set<std::string> allowed{"memcpy", "memmove", "memset"};
+  for (const auto& s : undefined_symbols(object)) {
+    EXPECT_EQ(forbidden.count(s), 0u) << object << " references " << s;
+    EXPECT_EQ(allowed.count(s), 1u) << object << " references unexpected symbol " << s;
+  }
+}
+
+struct Reference {
+  Eigen::MatrixXd A, B, C;  // coefficients the code implements
+  Eigen::VectorXd z0;
+  Eigen::MatrixXd Y;        // kSteps × m
+  Eigen::MatrixXd Z;        // kSteps × l, double Eigen loop
+  Eigen::MatrixXd Z_lti;    // kSteps × l, the runtime's hinf::runtime::LtiFilter
+};
+
+Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed) {
+  Reference r;
+  r.A = is_float ? hinf::test::to_float(g.A_F) : g.A_F;
+  r.B = is_float ? hinf::test::to_float(g.B_F) : g.B_F;
+  r.C = is_float ? hinf::test::to_float(g.C_F) : g.C_F;
+  r.z0 = hinf::test::random_matrix(seed, g.C_F.rows(), 1).col(0) * 3.0;
+  r.Y = hinf::test::random_matrix(seed + 7, kSteps, g.B_F.cols()) * 2.0;
+  if (is_float) {
+    r.z0 = hinf::test::to_float(r.z0);
+    r.Y = hinf::test::to_float(r.Y);
+  }
+  r.Z = hinf::test::reference_outputs(r.A, r.B, r.C, r.z0, r.Y);
+  hinf::runtime::LtiFilter lti(r.A, r.B, r.C);
+  lti.init(r.z0);
+  r.Z_lti.resize(r.Y.rows(), r.C.rows());
+  for (Eigen::Index k = 0; k < r.Y.rows(); ++k)
+    r.Z_lti.row(k) = lti.step(r.Y.row(k).transpose()).transpose();
+  return r;
+}
+
+// Normwise a-priori bound on |z_float(k) − z(k)| for the float code (derived here,
+// independently of the generator's componentwise bound): with u = 2^-24,
+// γ_k = k u/(1 − k u), X a bound on ‖x(k)‖∞,
+//   ‖e(0)‖ ≤ (γ_l + 2u)‖pinv‖ ‖z0‖       (float dot products + pinv rounded to float)
+//   ‖δ_j‖ ≤ γ_{n+m}(‖A‖ X + ‖B‖ ‖y‖max)  (rounding in one step)
+//   |z err(k)| ≤ ‖C A^k‖ ‖e(0)‖ + Σ_{i<k} ‖C A^i‖ δ + γ_n ‖C‖ X.
+double float_error_bound(const Reference& r) {
+  const double u = std::ldexp(1.0, -24);
+  const auto gam = [u](double k) { return k * u / (1.0 - k * u); };
+  const double n = static_cast<double>(r.A.rows()), m = static_cast<double>(r.B.cols()),
+               l = static_cast<double>(r.C.rows());
+  const auto norm = [](const Eigen::MatrixXd& M) { return M.cwiseAbs().rowwise().sum().maxCoeff(); };
+  // State bound: the exact states, plus a margin far above any rounding effect.
+  Eigen::VectorXd x = hinf::test::pinv_svd(r.C) * r.z0;
+  double X = x.cwiseAbs().maxCoeff();
+  for (Eigen::Index k = 0; k < r.Y.rows(); ++k) {
+    x = r.A * x + r.B * r.Y.row(k).transpose();
+    X = std::max(X, x.cwiseAbs().maxCoeff());
+  }
+  X *= 1.01;
+  const double e0 = (gam(l) + 2 * u) * norm(hinf::test::pinv_svd(r.C)) * r.z0.cwiseAbs().maxCoeff();
+  const double delta = gam(n + m) * (norm(r.A) * X + norm(r.B) * r.Y.cwiseAbs().maxCoeff());
+  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(r.A.rows(), r.A.cols());
+  double sum_ca = 0.0, max_ca = 0.0;
+  for (Eigen::Index i = 0; i < r.Y.rows(); ++i) {
+    const double ca = norm(r.C * power);
+    sum_ca += ca;
+    max_ca = std::max(max_ca, ca);
+    power = r.A * power;
+  }
+  return max_ca * e0 + sum_ca * delta + gam(n) * norm(r.C) * X;
+}
+
+// Generates, compiles with each compiler, checks symbols, runs the generated check
+// driver and the harness, and compares with the Eigen reference.
+void check_generated(const GainsFile& g, const std::string& prefix, Real real,
+                     std::uint64_t seed) {
+  const bool is_float = real == Real::Float;
+  TempDir dir;
+  CodegenOptions opt;
+  opt.prefix = prefix;
+  opt.real = real;
+  opt.generator = "hinf-synth test";
+  hinf::synth::write_generated_files(hinf::synth::generate_c(g, opt), dir.path());
+  const Reference ref = make_reference(g, is_float, seed);
+  {
+    std::ostringstream in;
+    in.precision(17);
+    for (Eigen::Index i = 0; i < ref.z0.size(); ++i) in << ref.z0(i) << " ";
+    in << "\n";
+    for (Eigen::Index k = 0; k < ref.Y.rows(); ++k) {
+      for (Eigen::Index j = 0; j < ref.Y.cols(); ++j) in << ref.Y(k, j) << " ";
+      in << "\n";
+    }
+    hinf::test::write_text(dir / "inputs.txt", in.str());
+  }
+  hinf::test::write_text(dir / "harness.c", harness_source(prefix, is_float));
+  const std::string flags = hinf::test::strict_c_flags(is_float);
+  const double scale = ref.Z.cwiseAbs().maxCoeff();
+  const double tol = is_float ? float_error_bound(ref) : 1e-12 * scale;
+  ASSERT_GT(scale, 0.0);
+  ASSERT_FALSE(compilers().empty()) << "no C compiler found at configure time";
+  for (const std::string& cc : compilers()) {
+    SCOPED_TRACE(cc + " " + prefix);
+    const std::string tag = compiler_tag(cc);
+    for (const char* opt_level : {"-O0", "-O2"}) {
+      const std::string obj = dir / (prefix + "_" + tag + opt_level + ".o");
+      const auto c = hinf::test::run(cc + " " + flags + " " + opt_level + " -c " +
+                                     (dir / (prefix + ".c")) + " -o " + obj);
+      ASSERT_EQ(c.exit_code, 0) << c.output;
+      EXPECT_EQ(c.output, "") << "compiler output (warnings) for " << opt_level;
+      expect_no_heap_or_libm(obj);
+    }
+    // The generated on-target check driver.
+    const std::string check_exe = dir / (prefix + "_check_" + tag);
+    auto c = hinf::test::run(cc + " " + flags + " -O2 " + (dir / (prefix + ".c")) + " " +
+                             (dir / (prefix + "_check.c")) + " -o " + check_exe);
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_EQ(c.output, "");
+    c = hinf::test::run(check_exe);
+    EXPECT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_NE(c.output.find("PASS"), std::string::npos) << c.output;
+    std::cout << "[ generated check ] " << c.output;
+    // The harness against the independent reference.
+    const std::string harness_exe = dir / ("harness_" + tag);
+    c = hinf::test::run(cc + " " + flags + " -O2 -I" + dir.path() + " " + (dir / "harness.c") +
+                        " " + (dir / (prefix + ".c")) + " -o " + harness_exe);
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_EQ(c.output, "");
+    c = hinf::test::run(harness_exe + " " + (dir / "inputs.txt"));
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    const Eigen::MatrixXd Z = parse_outputs(c.output, kSteps, ref.Z.cols());
+    const double err = (Z - ref.Z).cwiseAbs().maxCoeff();
+    std::cout << "[ harness ] " << prefix << " " << tag << " " << (is_float ? "float" : "double")
+              << ": " << kSteps << " steps, max |z - z_ref| = " << err << ", signal scale "
+              << scale << ", relative " << err / scale << ", tolerance " << tol << "\n";
+    EXPECT_LE(err, tol);
+    const double err_lti = (Z - ref.Z_lti).cwiseAbs().maxCoeff();
+    std::cout << "[ harness ] vs hinf::runtime::LtiFilter: max |z - z_lti| = " << err_lti << "\n";
+    EXPECT_LE(err_lti, tol);
+    if (is_float) {
+      // The float code must really compute in float: a double evaluation would
+      // agree with the reference to ~1e-16 relative.
+      EXPECT_GT(err, 1e-10 * scale) << "float code agrees with double to double precision";
+    }
+  }
+}
+
+GainsFile paper_gains() { return hinf::runtime_yaml::load_gains_file(HINF_TEST_PAPER_GAINS); }
+
+TEST(CodegenCompiled, PaperGainsDouble) { check_generated(paper_gains(), "nav", Real::Double, 11); }
+TEST(CodegenCompiled, PaperGainsFloat) { check_generated(paper_gains(), "navf", Real::Float, 12); }
+TEST(CodegenCompiled, RandomGains5x2x3Double) {
+  check_generated(hinf::test::random_gains(20261126, 5, 2, 3), "rnd", Real::Double, 13);
+}
+TEST(CodegenCompiled, RandomGains5x2x3Float) {
+  check_generated(hinf::test::random_gains(20261126, 5, 2, 3), "rndf", Real::Float, 14);
+}
+TEST(CodegenCompiled, RandomGainsTallC3x1x5Double) {  // l > n: least-squares init
+  check_generated(hinf::test::random_gains(77, 3, 1, 5), "tall", Real::Double, 15);
+}
+TEST(CodegenCompiled, RandomGains7x4x1Float) {
+  check_generated(hinf::test::random_gains(5, 7, 4, 1), "wide7", Real::Float, 16);
+}
+
+// The generated check driver must be able to fail: a perturbed coefficient is caught.
+TEST(CodegenCompiled, CheckDriverDetectsAPerturbedCoefficient) {
+  for (const Real real : {Real::Double, Real::Float}) {
+    const bool is_float = real == Real::Float;
+    TempDir dir;
+    CodegenOptions opt;
+    opt.prefix = "pert";
+    opt.real = real;
+    auto files = hinf::synth::generate_c(paper_gains(), opt);
+    // Perturb A_F(0,0) = -0.6126 by 1e-5 relative (below the paper's printed precision).
+    std::string& src = files.files[1].contents;
+    const std::string old = is_float ? "-0.612600029f" : "-0.61260000000000003";
+    const std::string pert = is_float ? "-0.612606f" : "-0.612606126";
+    const auto pos = src.find(old);
+    ASSERT_NE(pos, std::string::npos) << src.substr(0, 800);
+    src.replace(pos, old.size(), pert);
+    hinf::synth::write_generated_files(files, dir.path());
+    const std::string exe = dir / "pert_check";
+    auto c = hinf::test::run(std::string(HINF_TEST_GCC) + " -std=c99 -O2 " + (dir / "pert.c") +
+                             " " + (dir / "pert_check.c") + " -o " + exe);
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    c = hinf::test::run(exe);
+    EXPECT_EQ(c.exit_code, 1) << c.output;
+    EXPECT_NE(c.output.find("FAIL"), std::string::npos) << c.output;
+  }
+}
+
+TEST(CodegenCompiled, CppcheckClean) {
+  if (std::string(HINF_TEST_CPPCHECK).empty()) GTEST_SKIP() << "cppcheck not found";
+  for (const Real real : {Real::Double, Real::Float}) {
+    TempDir dir;
+    CodegenOptions opt;
+    opt.prefix = "cc";
+    opt.real = real;
+    hinf::synth::write_generated_files(hinf::synth::generate_c(paper_gains(), opt), dir.path());
+    const auto c = hinf::test::run(
+        std::string(HINF_TEST_CPPCHECK) +
+        " --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 -q "
+        "--inline-suppr -I" + dir.path() + " " + (dir / "cc.c") + " " + (dir / "cc_check.c"));
+    EXPECT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_EQ(c.output, "") << c.output;
+  }
+}
+
+TEST(CodegenCompiled, TwoFiltersLinkIntoOneBinary) {
+  TempDir dir;
+  CodegenOptions a;
+  a.prefix = "nav_a";
+  CodegenOptions b;
+  b.prefix = "nav_b";
+  b.real = Real::Float;
+  hinf::synth::write_generated_files(hinf::synth::generate_c(paper_gains(), a), dir.path());
+  hinf::synth::write_generated_files(
+      hinf::synth::generate_c(hinf::test::random_gains(3, 5, 2, 3), b), dir.path());
+  hinf::test::write_text(dir / "main.c",
+                         "#include <stdio.h>\n#include \"nav_a.h\"\n#include \"nav_b.h\"\n"
+                         "int main(void)\n{\n"
+                         "  nav_a_state sa;\n  nav_b_state sb;\n"
+                         "  const double za0[NAV_A_NZ] = {1.0, 2.0, 3.0, 0.0, 0.0, 0.0};\n"
+                         "  const double ya[NAV_A_NY] = {1.0, 2.0, 3.0};\n"
+                         "  const float zb0[NAV_B_NZ] = {1.0f, 2.0f, 3.0f};\n"
+                         "  const float yb[NAV_B_NY] = {0.5f, -0.5f};\n"
+                         "  double za[NAV_A_NZ];\n  float zb[NAV_B_NZ];\n"
+                         "  nav_a_init(&sa, za0);\n  nav_b_init(&sb, zb0);\n"
+                         "  nav_a_step(&sa, ya, za);\n  nav_b_step(&sb, yb, zb);\n"
+                         "  printf(\"%.17g %.9g\\n\", za[0], (double)zb[0]);\n"
+                         "  return 0;\n}\n");
+  for (const std::string& cc : compilers()) {
+    const std::string exe = dir / ("two_" + compiler_tag(cc));
+    auto c = hinf::test::run(cc + " " + hinf::test::strict_c_flags(true) + " -O2 " +
+                             (dir / "main.c") + " " + (dir / "nav_a.c") + " " +
+                             (dir / "nav_b.c") + " -o " + exe);
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_EQ(c.output, "");
+    c = hinf::test::run(exe);
+    EXPECT_EQ(c.exit_code, 0) << c.output;
+    // z(0) = C_F pinv(C_F) z0: for the paper's invertible C_F this is z0 itself.
+    std::istringstream in(c.output);
+    double za0 = 0, zb0 = 0;
+    in >> za0 >> zb0;
+    EXPECT_NEAR(za0, 1.0, 1e-12);
+    // nav_b: l = 3 < n = 5, C_F has full row rank, so C_F pinv(C_F) = I as well.
+    EXPECT_NEAR(zb0, 1.0, 1e-5);
+  }
+}
+
+TEST(CodegenOutput, ByteIdenticalForTheSameInput) {
+  const GainsFile g = paper_gains();
+  for (const Real real : {Real::Double, Real::Float}) {
+    CodegenOptions opt;
+    opt.prefix = "nav";
+    opt.real = real;
+    const auto first = hinf::synth::generate_c(g, opt);
+    const auto second = hinf::synth::generate_c(g, opt);
+    ASSERT_EQ(first.files.size(), 4u);
+    ASSERT_EQ(second.files.size(), 4u);
+    for (std::size_t i = 0; i < first.files.size(); ++i) {
+      EXPECT_EQ(first.files[i].name, second.files[i].name);
+      EXPECT_EQ(first.files[i].contents, second.files[i].contents);
+      // No timestamp of any usual form.
+      EXPECT_FALSE(std::regex_search(first.files[i].contents,
+                                     std::regex(R"(\b20[0-9]{2}-[01][0-9]-[0-3][0-9]\b)")));
+      EXPECT_FALSE(std::regex_search(first.files[i].contents,
+                                     std::regex(R"(\b[0-2][0-9]:[0-5][0-9]:[0-5][0-9]\b)")));
+    }
+  }
+}
+
+TEST(CodegenOutput, FileNamesProvenanceAndGuards) {
+  GainsFile g = hinf::test::random_gains(9, 4, 2, 2);
+  g.config_sha256 = std::string(64, 'a');
+  g.gamma = 0.125;
+  CodegenOptions opt;
+  opt.prefix = "MyFilt";
+  opt.generator = "hinf-synth 9.9.9";
+  const auto out = hinf::synth::generate_c(g, opt);
+  ASSERT_EQ(out.files.size(), 4u);
+  EXPECT_EQ(out.files[0].name, "MyFilt.h");
+  EXPECT_EQ(out.files[1].name, "MyFilt.c");
+  EXPECT_EQ(out.files[2].name, "MyFilt_vectors.h");
+  EXPECT_EQ(out.files[3].name, "MyFilt_check.c");
+  for (const auto& f : out.files) {
+    EXPECT_NE(f.contents.find("Generated by hinf-synth 9.9.9"), std::string::npos) << f.name;
+    EXPECT_NE(f.contents.find("Do not edit."), std::string::npos) << f.name;
+    EXPECT_NE(f.contents.find("Config sha256: " + std::string(64, 'a')), std::string::npos);
+    EXPECT_NE(f.contents.find("Gamma (certified l2-gain bound): 0.125"), std::string::npos);
+  }
+  const std::string& h = out.files[0].contents;
+  for (const char* s : {"#ifndef MYFILT_H_GENERATED", "extern \"C\" {", "#define MYFILT_NX 4",
+                        "#define MYFILT_NY 2", "#define MYFILT_NZ 2",
+                        "typedef struct {\n  double x[MYFILT_NX];\n} MyFilt_state;",
+                        "void MyFilt_init(MyFilt_state *s, const double z0[MYFILT_NZ]);",
+                        "void MyFilt_step(MyFilt_state *s, const double y[MYFILT_NY], "
+                        "double z[MYFILT_NZ]);"})
+    EXPECT_NE(h.find(s), std::string::npos) << s;
+  const std::string& c = out.files[1].contents;
+  EXPECT_NE(c.find("static const double MyFilt_A_F[MYFILT_NX][MYFILT_NX]"), std::string::npos);
+  for (const char* banned : {"malloc", "free(", "#include <math.h>", "static double", "goto"})
+    EXPECT_EQ(c.find(banned), std::string::npos) << banned;
+  // Hostile text from a gains file cannot end the provenance comment.
+  g.tool = "evil */ int x; /*";
+  const auto evil = hinf::synth::generate_c(g, opt);
+  EXPECT_EQ(evil.files[0].contents.find("*/ int x;"), std::string::npos);
+}
+
+TEST(CodegenOutput, FloatCodeHasNoDoubleAnywhere) {
+  CodegenOptions opt;
+  opt.prefix = "f";
+  opt.real = Real::Float;
+  const auto out = hinf::synth::generate_c(paper_gains(), opt);
+  // Outside comments, the filter and its vectors never mention double.
+  const std::regex comment(R"(/\*[\s\S]*?\*/)");
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string code = std::regex_replace(out.files[i].contents, comment, "");
+    EXPECT_EQ(code.find("double"), std::string::npos) << out.files[i].name;
+  }
+  // Every floating literal in the filter source carries the f suffix.
+  const std::string& c = out.files[1].contents;
+  const std::regex literal(R"([-+]?[0-9]+\.[0-9]*(e[-+]?[0-9]+)?[f]?)");
+  int count = 0;
+  for (auto it = std::sregex_iterator(c.begin(), c.end(), literal); it != std::sregex_iterator();
+       ++it) {
+    const std::string s = it->str();
+    if (s.find('.') == std::string::npos) continue;
+    ++count;
+    EXPECT_EQ(s.back(), 'f') << s;
+  }
+  EXPECT_GE(count, 36 + 18 + 36 + 36);  // A_F, B_F, C_F, pinv(C_F)
+}
+
+// Every emitted coefficient reads back to the gains-file value exactly.
+TEST(CodegenOutput, CoefficientsRoundTripExactly) {
+  const GainsFile g = hinf::test::random_gains(42, 5, 2, 3);
+  for (const Real real : {Real::Double, Real::Float}) {
+    CodegenOptions opt;
+    opt.prefix = "rt";
+    opt.real = real;
+    const std::string c = hinf::synth::generate_c(g, opt).files[1].contents;
+    const auto begin = c.find("rt_A_F[RT_NX][RT_NX] = {");
+    const auto end = c.find("};", begin);
+    ASSERT_NE(begin, std::string::npos);
+    std::string body = c.substr(begin, end - begin);
+    body = body.substr(body.find('=') + 1);
+    const std::regex number(R"([-+]?[0-9][0-9.eE+-]*)");
+    std::vector<double> values;
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), number);
+         it != std::sregex_iterator(); ++it)
+      values.push_back(real == Real::Float ? static_cast<double>(std::strtof(it->str().c_str(), nullptr))
+                                           : std::strtod(it->str().c_str(), nullptr));
+    ASSERT_EQ(values.size(), 25u);
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        const double expected = real == Real::Float
+                                    ? static_cast<double>(static_cast<float>(g.A_F(i, j)))
+                                    : g.A_F(i, j);
+        EXPECT_EQ(values[static_cast<std::size_t>(i * 5 + j)], expected) << i << "," << j;
+      }
+  }
+}
+
+TEST(CodegenPrefix, AcceptsOrdinaryIdentifiers) {
+  for (const char* p : {"nav", "NavFilter", "hinf_chaser_1", "f", "x9", "e_1", "is", "sig_1",
+                        "pri", "Int8", "a_prefix_of_22_chars_x"})
+    EXPECT_NO_THROW(hinf::synth::validate_codegen_prefix(p)) << p;
+}
+
+TEST(CodegenPrefix, RefusesInvalidAndReservedNames) {
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"", "empty"},
+      {"1nav", "start with a letter"},
+      {"_nav", "start with a letter"},
+      {"nav-filter", "C identifier"},
+      {"nav filter", "C identifier"},
+      {"na\xc3\xafve", "C identifier"},
+      {"nav__x", "'__'"},
+      {"nav_", "end with '_'"},
+      {"int", "keyword"},
+      {"class", "keyword"},
+      {"main", "keyword"},
+      {"strfilter", "reserved"},
+      {"isnav", "reserved"},
+      {"tonav", "reserved"},
+      {"memx", "reserved"},
+      {"ekf", "<errno.h>"},
+      {"E2", "<errno.h>"},
+      {"signal", "<signal.h>"},
+      {"sig", "<signal.h>"},
+      {"lc", "<locale.h>"},
+      {"prix", "<inttypes.h>"},
+      {"a_very_long_prefix_name_x", "too long"}};
+  for (const auto& [prefix, why] : bad) {
+    try {
+      hinf::synth::validate_codegen_prefix(prefix);
+      ADD_FAILURE() << "accepted '" << prefix << "'";
+    } catch (const hinf::synth::Error& e) {
+      EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << prefix << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find("--prefix"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(CodegenWrite, FailureLeavesNothingBehind) {
+  TempDir dir;
+  CodegenOptions opt;
+  opt.prefix = "nav";
+  const auto files = hinf::synth::generate_c(paper_gains(), opt);
+  // nav.c is a directory: nav.h is renamed first, then the rename of nav.c fails;
+  // everything must be rolled back, leaving only the obstacle.
+  const std::string out = dir / "out";
+  std::filesystem::create_directories(out + "/nav.c");
+  try {
+    hinf::synth::write_generated_files(files, out);
+    ADD_FAILURE() << "writing over a directory succeeded";
+  } catch (const hinf::synth::Error& e) {
+    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("nav.c"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(hinf::test::list_dir(out), "nav.c");
+  // A directory that cannot be created (its parent is a file): nothing created.
+  hinf::test::write_text(dir / "file", "x");
+  EXPECT_THROW(hinf::synth::write_generated_files(files, dir / "file/sub/dir"),
+               hinf::synth::Error);
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "file out");
+  // A failure after the directory was created removes the directory again.
+  hinf::synth::GeneratedFiles bad = files;
+  bad.files.push_back({"sub/evil.c", "x"});
+  EXPECT_THROW(hinf::synth::write_generated_files(bad, dir / "fresh/nested"), hinf::synth::Error);
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "file out");
+  // Success into a new nested directory.
+  hinf::synth::write_generated_files(files, dir / "new/nested");
+  EXPECT_EQ(hinf::test::list_dir(dir / "new/nested"), "nav.c nav.h nav_check.c nav_vectors.h");
+}
+
+TEST(CodegenInput, RejectsNonFiniteAndOverflowingCoefficients) {
+  GainsFile g = hinf::test::random_gains(1, 3, 1, 1);
+  CodegenOptions opt;
+  opt.prefix = "ok";
+  g.B_F(2, 0) = 1e300;
+  opt.real = Real::Float;
+  try {
+    hinf::synth::generate_c(g, opt);
+    ADD_FAILURE() << "1e300 accepted for float";
+  } catch (const hinf::synth::Error& e) {
+    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("filter.B_F(2,0)"), std::string::npos) << e.what();
+  }
+  g.B_F(2, 0) = std::numeric_limits<double>::quiet_NaN();
+  opt.real = Real::Double;
+  EXPECT_THROW(hinf::synth::generate_c(g, opt), hinf::synth::Error);
+}
+
+}  // namespace

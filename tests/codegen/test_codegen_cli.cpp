@@ -1,0 +1,101 @@
+// `hinf-synth codegen` from the command line: exit codes, messages, files left.
+// Runs the stand-in hinf_codegen_cli, or the program named by $HINF_CODEGEN_CLI.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+
+#include "codegen_test_support.hpp"
+
+namespace {
+
+using hinf::test::TempDir;
+
+std::string cli() {
+  const char* env = std::getenv("HINF_CODEGEN_CLI");
+  return env != nullptr && *env != '\0' ? env : HINF_TEST_CODEGEN_CLI;
+}
+
+hinf::test::CommandResult codegen(const std::string& args) {
+  return hinf::test::run(cli() + " codegen " + args);
+}
+
+TEST(CodegenCli, WritesTheFourFilesAndIsByteIdenticalAcrossRuns) {
+  TempDir dir;
+  const std::string gains = HINF_TEST_PAPER_GAINS;
+  auto r = codegen(gains + " --prefix nav --out " + (dir / "a"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(hinf::test::list_dir(dir / "a"), "nav.c nav.h nav_check.c nav_vectors.h");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // a timestamp would change
+  r = codegen(gains + " --prefix nav --out " + (dir / "b"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"nav.c", "nav.h", "nav_check.c", "nav_vectors.h"})
+    EXPECT_EQ(hinf::test::read_text(dir / "a/" + f), hinf::test::read_text(dir / "b/" + f)) << f;
+  // Regenerating over existing files replaces them.
+  r = codegen(gains + " --prefix nav --out " + (dir / "a") + " --real float");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(hinf::test::read_text(dir / "a/nav.h").find("float x[NAV_NX]"), std::string::npos);
+  EXPECT_EQ(hinf::test::list_dir(dir / "a"), "nav.c nav.h nav_check.c nav_vectors.h");
+}
+
+TEST(CodegenCli, BadPrefixExits2AndWritesNothing) {
+  TempDir dir;
+  for (const char* prefix : {"1abc", "int", "nav-x", "_x", "strx"}) {
+    const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix " + prefix +
+                           " --out " + (dir / "out"));
+    EXPECT_EQ(r.exit_code, 2) << prefix << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("--prefix '") + prefix + "'"), std::string::npos)
+        << r.output;
+  }
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
+}
+
+TEST(CodegenCli, BadGainsFileExits2AndWritesNothing) {
+  TempDir dir;
+  hinf::test::write_text(dir / "bad.yaml",
+                         "format: hinf-gains/1\nfilter:\n  A_F: [[1, 0], [0, 1]]\n"
+                         "  B_F: [[1], [1], [1]]\n  C_F: [[1, 0]]\n");
+  auto r = codegen((dir / "bad.yaml") + " --prefix nav --out " + (dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.yaml"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("filter.B_F"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("got 3x1"), std::string::npos) << r.output;
+  r = codegen((dir / "missing.yaml") + " --prefix nav --out " + (dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("missing.yaml"), std::string::npos) << r.output;
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "bad.yaml");
+}
+
+TEST(CodegenCli, UnwritableOutputExits2AndLeavesNothing) {
+  TempDir dir;
+  hinf::test::write_text(dir / "file", "x");
+  // --out is a regular file; --out lies under a regular file.
+  for (const std::string& out : {dir / "file", dir / "file/sub"}) {
+    const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav --out " + out);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("cannot write"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "file");
+  EXPECT_EQ(hinf::test::read_text(dir / "file"), "x");
+  // A target that is in the way (nav.c is a directory): rolled back completely.
+  std::filesystem::create_directories(dir / "out/nav.c");
+  const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav --out " +
+                         (dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(hinf::test::list_dir(dir / "out"), "nav.c");
+}
+
+TEST(CodegenCli, BadOptionsExit2) {
+  TempDir dir;
+  const std::string g = HINF_TEST_PAPER_GAINS;
+  EXPECT_EQ(codegen(g + " --prefix nav --out " + (dir / "o") + " --real half").exit_code, 2);
+  EXPECT_EQ(codegen(g + " --out " + (dir / "o")).exit_code, 2);              // no --prefix
+  EXPECT_EQ(codegen(g + " --prefix nav").exit_code, 2);                      // no --out
+  EXPECT_EQ(codegen("--prefix nav --out " + (dir / "o")).exit_code, 2);      // no gains file
+  EXPECT_EQ(codegen(g + " --prefix nav --out " + (dir / "o") + " --vector-steps 0").exit_code, 2);
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
+}
+
+}  // namespace

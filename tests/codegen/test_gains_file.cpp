@@ -1,0 +1,213 @@
+// The gains-file reader (runtime/yaml): accepted files and the messages of
+// rejected ones (file, position, key path, expected and actual sizes).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "codegen_test_support.hpp"
+#include "hinf/runtime_yaml/gains_file.hpp"
+#include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
+
+namespace {
+
+using hinf::runtime_yaml::GainsFileError;
+using hinf::runtime_yaml::load_gains_file;
+using hinf::runtime_yaml::parse_gains_yaml;
+
+const char* const kGood = R"(format: hinf-gains/1
+tool: hinf-synth 0.1.0
+config_sha256: 0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef
+dimensions: {n: 2, m: 1, l: 1}
+gamma: 1.5
+gamma_squared: 2.25
+filter:
+  A_F: [[0.5, 0.1], [-0.2, 0.3]]
+  B_F: [[1], [2e-3]]
+  C_F: [[1.0, -1.0]]
+certificate: {lmi_min_eig: -1e-9, anything: [1, 2]}
+solver: {status: solved}
+timing: {total_s: 1.5}
+)";
+
+// Returns the message of the GainsFileError thrown for `text` (fails if none).
+std::string error_for(const std::string& text) {
+  try {
+    parse_gains_yaml(text, "g.yaml");
+  } catch (const GainsFileError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted:\n" << text;
+  return {};
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) s.replace(pos, from.size(), to);
+  return s;
+}
+
+#define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
+
+TEST(GainsFile, ReadsAllFields) {
+  const auto g = parse_gains_yaml(kGood, "g.yaml");
+  ASSERT_EQ(g.A_F.rows(), 2);
+  ASSERT_EQ(g.A_F.cols(), 2);
+  ASSERT_EQ(g.B_F.rows(), 2);
+  ASSERT_EQ(g.B_F.cols(), 1);
+  ASSERT_EQ(g.C_F.rows(), 1);
+  ASSERT_EQ(g.C_F.cols(), 2);
+  EXPECT_EQ(g.A_F(1, 0), -0.2);
+  EXPECT_EQ(g.B_F(1, 0), 2e-3);
+  EXPECT_EQ(g.C_F(0, 1), -1.0);
+  ASSERT_TRUE(g.gamma.has_value());
+  EXPECT_EQ(*g.gamma, 1.5);
+  EXPECT_EQ(g.tool, "hinf-synth 0.1.0");
+  EXPECT_EQ(g.config_sha256.size(), 64u);
+}
+
+TEST(GainsFile, MinimalHandWrittenFile) {
+  const auto g = parse_gains_yaml("format: hinf-gains/1\nfilter:\n  A_F: [[1]]\n  B_F: [[2]]\n"
+                                  "  C_F: [[3]]\n",
+                                  "min.yaml");
+  EXPECT_EQ(g.A_F(0, 0), 1.0);
+  EXPECT_FALSE(g.gamma.has_value());
+  EXPECT_TRUE(g.config_sha256.empty());
+  EXPECT_TRUE(g.tool.empty());
+}
+
+TEST(GainsFile, PaperGainsFile) {
+  const auto g = load_gains_file(HINF_TEST_PAPER_GAINS);
+  ASSERT_EQ(g.A_F.rows(), 6);
+  ASSERT_EQ(g.B_F.cols(), 3);
+  ASSERT_EQ(g.C_F.rows(), 6);
+  // SPEC §3: A_F(4,1) = −6.1302, B_F(5,2) = −6.0989, C_F(4,4) = −0.999960 (1-based).
+  EXPECT_EQ(g.A_F(3, 0), -6.1302);
+  EXPECT_EQ(g.B_F(4, 1), -6.0989);
+  EXPECT_NEAR(g.C_F(3, 3), -0.99996, 1e-15);
+}
+
+TEST(GainsFile, FormatIsRequiredAndChecked) {
+  auto msg = error_for(replace(kGood, "format: hinf-gains/1\n", ""));
+  EXPECT_HAS(msg, "g.yaml");
+  EXPECT_HAS(msg, "format: missing");
+  msg = error_for(replace(kGood, "hinf-gains/1", "hinf-gains/2"));
+  EXPECT_HAS(msg, "g.yaml:1:");
+  EXPECT_HAS(msg, "unsupported format 'hinf-gains/2'");
+}
+
+TEST(GainsFile, UnknownTopLevelKeyIsAnErrorWithSuggestion) {
+  const auto msg = error_for(std::string(kGood) + "gamma_sqared: 3\n");
+  EXPECT_HAS(msg, "g.yaml:14:");
+  EXPECT_HAS(msg, "gamma_sqared: unknown key");
+  EXPECT_HAS(msg, "did you mean 'gamma_squared'?");
+}
+
+TEST(GainsFile, DuplicateKeyIsAnError) {
+  EXPECT_HAS(error_for(std::string(kGood) + "gamma: 2\n"), "gamma: duplicate key");
+}
+
+TEST(GainsFile, FilterKeys) {
+  EXPECT_HAS(error_for("format: hinf-gains/1\n"), "filter: missing");
+  EXPECT_HAS(error_for(replace(kGood, "  C_F: [[1.0, -1.0]]\n", "")), "filter.C_F: missing");
+  EXPECT_HAS(error_for(replace(kGood, "  C_F:", "  D_F: [[1]]\n  C_F:")),
+             "filter.D_F: unknown key");
+  EXPECT_HAS(error_for(replace(kGood, "  C_F: [[1.0, -1.0]]", "  C_F: {diag: [1, 1]}")),
+             "filter.C_F: expected a matrix");
+}
+
+TEST(GainsFile, ShapesNameExpectedAndActualDimensions) {
+  auto msg = error_for(replace(kGood, "A_F: [[0.5, 0.1], [-0.2, 0.3]]", "A_F: [[0.5, 0.1]]"));
+  EXPECT_HAS(msg, "g.yaml:8:");
+  EXPECT_HAS(msg, "filter.A_F: must be square (n x n), got 1x2");
+  msg = error_for(replace(kGood, "B_F: [[1], [2e-3]]", "B_F: [[1], [2e-3], [3]]"));
+  EXPECT_HAS(msg, "filter.B_F: expected 2 rows (n x m, n = 2 from filter.A_F), got 3x1");
+  msg = error_for(replace(kGood, "C_F: [[1.0, -1.0]]", "C_F: [[1.0, -1.0, 2.0]]"));
+  EXPECT_HAS(msg, "filter.C_F: expected 2 columns (l x n, n = 2 from filter.A_F), got 1x3");
+  msg = error_for(replace(kGood, "A_F: [[0.5, 0.1], [-0.2, 0.3]]", "A_F: [[0.5, 0.1], [-0.2]]"));
+  EXPECT_HAS(msg, "filter.A_F[1]: row has 1 entries, expected 2");
+  EXPECT_HAS(error_for(replace(kGood, "A_F: [[0.5, 0.1], [-0.2, 0.3]]", "A_F: []")),
+             "filter.A_F: matrix has no rows");
+  EXPECT_HAS(error_for(replace(kGood, "A_F: [[0.5, 0.1], [-0.2, 0.3]]", "A_F: [0.5, 0.1]")),
+             "filter.A_F[0]: expected a row");
+}
+
+TEST(GainsFile, DimensionsMustAgreeWithTheMatrices) {
+  const auto msg = error_for(replace(kGood, "{n: 2, m: 1, l: 1}", "{n: 2, m: 3, l: 1}"));
+  EXPECT_HAS(msg, "g.yaml:4:");
+  EXPECT_HAS(msg, "dimensions.m: declares 3 but the filter has 1 (columns of filter.B_F");
+  EXPECT_HAS(error_for(replace(kGood, "{n: 2, m: 1, l: 1}", "{n: 2, m: 1, l: 1, p: 2}")),
+             "dimensions.p: unknown key");
+  EXPECT_HAS(error_for(replace(kGood, "{n: 2, m: 1, l: 1}", "{n: -2, m: 1, l: 1}")),
+             "dimensions.n: must be positive");
+  EXPECT_HAS(error_for(replace(kGood, "{n: 2, m: 1, l: 1}", "{n: two}")),
+             "dimensions.n: 'two' is not an integer");
+}
+
+TEST(GainsFile, EntriesMustBeFiniteNumbers) {
+  auto msg = error_for(replace(kGood, "[[1], [2e-3]]", "[[1], [abc]]"));
+  EXPECT_HAS(msg, "g.yaml:9:");
+  EXPECT_HAS(msg, "filter.B_F[1][0]: 'abc' is not a number");
+  EXPECT_HAS(error_for(replace(kGood, "[[1], [2e-3]]", "[[1], [.nan]]")),
+             "filter.B_F[1][0]: '.nan' is not finite");
+  EXPECT_HAS(error_for(replace(kGood, "[[1], [2e-3]]", "[[1], [-.inf]]")),
+             "filter.B_F[1][0]: '-.inf' is not finite");
+  EXPECT_HAS(error_for(replace(kGood, "[[1], [2e-3]]", "[[1], [1e999]]")),
+             "filter.B_F[1][0]");
+  EXPECT_HAS(error_for(replace(kGood, "[[1], [2e-3]]", "[[1], [[2]]]")),
+             "filter.B_F[1][0]: expected a number");
+}
+
+TEST(GainsFile, OptionalScalarsAreChecked) {
+  EXPECT_HAS(error_for(replace(kGood, "gamma: 1.5", "gamma: -1")), "gamma: must be positive");
+  EXPECT_HAS(error_for(replace(kGood, "gamma: 1.5", "gamma: .inf")), "gamma: '.inf' is not finite");
+  EXPECT_HAS(error_for(replace(kGood, "0123456789abcdef0123456789abcdef0123456789abcdef01234567"
+                                      "89abcdef",
+                               "xyz")),
+             "config_sha256: expected 64 hexadecimal digits, got 'xyz'");
+}
+
+TEST(GainsFile, NotAGainsFileAtAll) {
+  EXPECT_HAS(error_for(""), "g.yaml: empty file");
+  EXPECT_HAS(error_for("[1, 2]"), "expected a mapping at the top level");
+  EXPECT_HAS(error_for("format: [unclosed"), "g.yaml:");
+  EXPECT_HAS(error_for("format: [unclosed"), "not valid YAML");
+}
+
+TEST(GainsFile, LoadReportsUnreadableFiles) {
+  hinf::test::TempDir dir;
+  try {
+    load_gains_file(dir / "missing.yaml");
+    ADD_FAILURE();
+  } catch (const GainsFileError& e) {
+    EXPECT_HAS(std::string(e.what()), dir / "missing.yaml");
+    EXPECT_HAS(std::string(e.what()), "no such file");
+  }
+  try {
+    load_gains_file(dir.path());
+    ADD_FAILURE();
+  } catch (const GainsFileError& e) {
+    EXPECT_HAS(std::string(e.what()), "is a directory");
+  }
+  hinf::test::write_text(dir / "g.yaml", kGood);
+  EXPECT_EQ(load_gains_file(dir / "g.yaml").A_F(0, 0), 0.5);
+}
+
+TEST(GainsFile, MakeLtiFilter) {
+  const auto f = hinf::runtime_yaml::make_lti_filter(load_gains_file(HINF_TEST_PAPER_GAINS));
+  EXPECT_EQ(f.n(), 6);
+  EXPECT_EQ(f.m(), 3);
+  EXPECT_EQ(f.l(), 6);
+  // A_F = 1.5 is not Schur stable: reported as a gains-file error naming the source.
+  const auto unstable = parse_gains_yaml(
+      "format: hinf-gains/1\nfilter: {A_F: [[1.5]], B_F: [[1]], C_F: [[1]]}\n", "u.yaml");
+  try {
+    hinf::runtime_yaml::make_lti_filter(unstable, "u.yaml");
+    ADD_FAILURE() << "unstable filter accepted";
+  } catch (const GainsFileError& e) {
+    EXPECT_HAS(std::string(e.what()), "u.yaml: filter: ");
+    EXPECT_HAS(std::string(e.what()), "not Schur stable");
+  }
+}
+
+}  // namespace

@@ -1,0 +1,62 @@
+// Metrics on synthetic error series with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hinf/sim/metrics.hpp"
+
+namespace {
+
+using hinf::sim::compute_metrics;
+using hinf::sim::compute_stats;
+using hinf::sim::MetricSettings;
+
+TEST(Metrics, KnownSeries) {
+  // t = 0..9 s; position error 10 − t for t < 5, then alternating 0.3 / 0.4; velocity 0.1·k
+  std::vector<double> t, p, v;
+  for (int k = 0; k < 10; ++k) {
+    t.push_back(k);
+    p.push_back(k < 5 ? 10.0 - k : (k % 2 ? 0.3 : 0.4));
+    v.push_back(0.1 * k);
+  }
+  MetricSettings s;
+  s.steady_state_start_s = 5.0;
+  s.converge_threshold_m = 1.0;
+  const auto m = compute_metrics(t, p, v, std::nullopt, s);
+  ASSERT_TRUE(m.position_rms_m && m.velocity_rms_mps && m.position_max_m && m.converge_time_s);
+  // window k = 5..9: p = 0.3, 0.4, 0.3, 0.4, 0.3
+  EXPECT_NEAR(*m.position_rms_m, std::sqrt((3 * 0.09 + 2 * 0.16) / 5), 1e-15);
+  EXPECT_NEAR(*m.velocity_rms_mps, std::sqrt((0.25 + 0.36 + 0.49 + 0.64 + 0.81) / 5), 1e-15);
+  EXPECT_DOUBLE_EQ(*m.position_max_m, 0.4);
+  EXPECT_DOUBLE_EQ(*m.converge_time_s, 5.0);  // p(4) = 6 ≥ 1, from k = 5 all < 1
+  EXPECT_FALSE(m.diverged);
+}
+
+TEST(Metrics, ConvergenceIsFromTheLastExcursion) {
+  std::vector<double> t = {0, 1, 2, 3, 4, 5}, p = {5, 0.5, 0.5, 2, 0.5, 0.5}, v(6, 0.0);
+  MetricSettings s;
+  s.converge_threshold_m = 1.0;
+  EXPECT_DOUBLE_EQ(*compute_metrics(t, p, v, std::nullopt, s).converge_time_s, 4.0);
+  p.back() = 1.0;  // threshold is strict: error must stay *below* it
+  EXPECT_FALSE(compute_metrics(t, p, v, std::nullopt, s).converge_time_s.has_value());
+}
+
+TEST(Metrics, DivergedHasNoMetrics) {
+  std::vector<double> t = {0, 1, 2}, p = {1, 2, 3}, v = {0, 0, 0};
+  const auto m = compute_metrics(t, p, v, 1L, MetricSettings{});
+  EXPECT_TRUE(m.diverged);
+  EXPECT_DOUBLE_EQ(*m.diverged_at_s, 1.0);
+  EXPECT_FALSE(m.position_rms_m || m.velocity_rms_mps || m.position_max_m || m.converge_time_s);
+}
+
+TEST(Metrics, StatsSkipMissingAndUseSampleStd) {
+  const auto s = compute_stats({1.0, std::nullopt, 2.0, 3.0, 6.0});
+  EXPECT_EQ(s.count, 4);
+  EXPECT_DOUBLE_EQ(s.mean, 3.0);
+  EXPECT_NEAR(s.std, std::sqrt((4 + 1 + 0 + 9) / 3.0), 1e-15);
+  EXPECT_DOUBLE_EQ(s.min, 1.0);
+  EXPECT_DOUBLE_EQ(s.max, 6.0);
+  EXPECT_EQ(compute_stats({std::nullopt}).count, 0);
+}
+
+}  // namespace
