@@ -24,6 +24,7 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
     return out;
   }
 #if !HINF_SIM_SYNTHESIS
+  (void)verbose;
   throw hinf::synth::Error(hinf::synth::ErrorCode::InvalidInput,
                            "'synthesize: " + source.synthesize_path +
                                "': this hinf-sim was built without on-the-fly synthesis (HINF_SIM_SYNTHESIS=OFF); "

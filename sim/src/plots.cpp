@@ -79,13 +79,19 @@ std::vector<std::string> write_plots(const std::string& dir, const Trajectory& t
   gp << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\n"
      << "set grid\nset key outside right top\nset xlabel 'time (s)'\n"
      << "set datafile missing 'NaN'\n";
+  // Drawing order: the noisiest (LTI) traces first, so that they do not hide the others.
+  std::vector<std::size_t> order;
+  for (const char* name : {"published", "hinf", "ekf_no_control", "ekf", "rekf"})
+    for (std::size_t f = 0; f < tr.filters.size(); ++f)
+      if (tr.filters[f].name == name) order.push_back(f);
   auto error_plot = [&](int which, const std::string& png, const std::string& ylabel, const std::string& what) {
     gp << "set output " << quoted(png) << "\nset logscale y\nset format y '10^{%L}'\n"
        << "set ylabel " << quoted(ylabel) << "\nset title " << quoted(title + ": " + what) << " noenhanced\n"
        << "plot ";
-    for (std::size_t f = 0; f < tr.filters.size(); ++f) {
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const std::size_t f = order[i];
       const int col = 5 + 2 * static_cast<int>(f) + which;
-      gp << (f ? ", " : "") << quoted(data) << " using 1:" << col << " with lines lw 1.5 lc rgb "
+      gp << (i ? ", " : "") << quoted(data) << " using 1:" << col << " with lines lw 1.5 lc rgb "
          << quoted(colour(tr.filters[f].name)) << " title " << quoted(tr.filters[f].name) << " noenhanced";
     }
     gp << "\nunset logscale y\nset format y '%g'\n";

@@ -37,8 +37,5 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
     -DCONSUMER_EXPECT_YAML=${EXPECT_YAML} -DCONSUMER_EXPECTED_PREFIX=${prefix})
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/build -j2)
-run(${WORK_DIR}/build/consumer_lti)
-if(EXPECT_YAML)
-  run(${WORK_DIR}/build/consumer_yaml)
-endif()
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run(${WORK_DIR}/build/consumer)

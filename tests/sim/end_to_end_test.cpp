@@ -133,8 +133,9 @@ TEST_P(Scenarios, RunsBrieflyAndReplays) {
   ASSERT_EQ(csv.rows.size(), 3001u);  // t = 0 … 300 s at 0.1 s
   EXPECT_DOUBLE_EQ(csv.rows.back()[0], 300.0);
   EXPECT_LT(replay_error(csv, out / "gains.yaml", "hinf"), 1e-9);
-  if (fs::exists(out / "published_gains.yaml"))
+  if (fs::exists(out / "published_gains.yaml")) {
     EXPECT_LT(replay_error(csv, out / "published_gains.yaml", "published"), 1e-9);
+  }
   fs::remove_all(out);
 }
 

@@ -10,6 +10,7 @@
 
 #include "hinf/synth/settings.hpp"
 #include "hinf/synth/status.hpp"
+#include "hinf/synth/synthesis.hpp"
 #include "lmi/lmi_problem.hpp"
 
 namespace hinf::barrier {
@@ -17,16 +18,7 @@ namespace hinf::barrier {
 using synth::Settings;
 using synth::SolverStatus;
 
-struct IterationReport {
-  int phase = 2;           // 1 or 2
-  int centering = 0;       // outer step
-  double t = 0;
-  double objective = 0;    // cᵀx (phase II) or s (phase I)
-  double gap = 0;          // (N+1)/t
-  int newton = 0;          // Ipopt iterations in this centring
-  double lambda2 = 0;      // Newton decrement² at exit
-  double elapsed_s = 0;
-};
+using synth::IterationReport;
 
 struct SdpSolution {
   Eigen::VectorXd x;
@@ -42,7 +34,7 @@ struct SdpSolution {
   double elapsed_s = 0;
 };
 
-using IterationObserver = std::function<void(const IterationReport&)>;
+using synth::IterationObserver;
 
 // x0: optional starting point (size 0 = zero vector).
 SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c,

@@ -1,6 +1,7 @@
 // Robust H∞ filter synthesis (SPEC §2: Theorem 1, Corollary 1, recovery eq. 21)
 // and the independent certificate of its result.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,11 +64,30 @@ struct SynthesisResult {
 // Error(NumericalFailure) if the certificate fails; never returns an uncertified filter.
 SynthesisResult synthesize(const Plant& plant, const Settings& settings);
 
+// Progress of the interior-point solver, for an iteration table (`--verbose`).
+struct IterationReport {
+  int phase = 2;           // 1: finding a strictly feasible point, 2: minimising γ²
+  int centering = 0;       // outer (barrier-parameter) step
+  double t = 0;            // barrier parameter
+  double objective = 0;    // γ² (phase 2) or the infeasibility s (phase 1)
+  double gap = 0;          // bound on objective − optimum: (N+1)/t
+  int newton = 0;          // Ipopt (Newton) iterations in this centring
+  double lambda2 = 0;      // Newton decrement² at its end
+  double elapsed_s = 0;
+};
+using IterationObserver = std::function<void(const IterationReport&)>;
+SynthesisResult synthesize(const Plant& plant, const Settings& settings,
+                           const IterationObserver& observer);
+
 // Independent checks of SPEC §2 for any filter against a plant at bound gamma.
 // `lmi_point` checks (check 1) are only possible for synthesised filters and are
 // skipped (left at defaults) here; checks 2–4 are computed.
 Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
                            const Settings& settings);
+
+// The Theorem-1 LMI in SDPA sparse format (min γ² s.t. (20) ≺ 0, H/E balanced, λ' = λs²),
+// for cross-checking γ* with any SDP solver.
+std::string theorem1_sdpa(const Plant& plant, const std::string& comment);
 
 // Robust analysis (SPEC §2 check 4, Lemma 1 / eq. 17 with the S-procedure):
 // the smallest γ for which the analysis LMI is feasible for this filter.

@@ -1,0 +1,31 @@
+// Analysis of any given filter against a plant (hinf-synth analyze).
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/synthesis.hpp"
+
+namespace hinf::synth {
+
+struct DeltaPoint {
+  double delta = 0;          // ω = ω₀(1 + δ)
+  double spectral_radius = 0;
+  double hinf_norm = 0;      // +inf if the error system is unstable at this δ
+};
+
+struct FilterAnalysis {
+  double spectral_radius_nominal = 0;
+  double hinf_norm_nominal = 0;        // +inf if unstable
+  double hinf_norm_peak_frequency = 0;
+  double robust_bound = 0;             // analysis LMI (S-procedure); +inf if infeasible
+  double spectral_radius_sampled_max = 0;  // over sampled full-block ‖F‖ ≤ 1
+  // Hill model only: exact plant at frozen δ on a grid over [−δ̄, δ̄] (structured F)
+  std::vector<DeltaPoint> delta_grid;
+  double worst_delta = 0, worst_delta_hinf_norm = 0;
+};
+
+FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillModel>& hill,
+                              const Filter& filter, const Settings& settings, int delta_points = 41);
+
+}  // namespace hinf::synth

@@ -1,0 +1,32 @@
+// Dense, direct assemblies of the two LMIs of SPEC §2 in the user's units, written
+// independently of the generic LMI layer the solver uses, so that the certificate
+// does not trust the solver's own data structures (SPEC §2: independent checks).
+#pragma once
+#include <Eigen/Dense>
+
+#include "hinf/synth/plant.hpp"
+
+namespace hinf::certify {
+
+struct Theorem1Point {
+  Eigen::MatrixXd R, S, AF_bar, BF_bar, CF_bar;
+  double lambda = 0;  // unused without uncertainty
+  double g = 0;       // γ²
+};
+
+// LMI (20) of SPEC §2 at a point (blocks n, n, n, n, p, q, l[, j]).
+Eigen::MatrixXd theorem1_matrix(const synth::Plant& plant, const Theorem1Point& x);
+
+// The robust analysis LMI (Lemma 1, eq. 17, with the S-procedure) for a fixed filter
+// at (P, λ, g) (blocks 2n, 2n, p+q, l[, j]).
+Eigen::MatrixXd analysis_matrix(const synth::Plant& plant, const synth::Filter& filter,
+                                const Eigen::MatrixXd& P, double lambda, double g);
+
+struct DefinitenessCheck {
+  double max_eig = 0;           // largest eigenvalue of M
+  double max_eig_relative = 0;  // max_eig / ‖M‖₂
+  bool negative_definite = false;  // Cholesky of −M − margin·I succeeded
+};
+DefinitenessCheck check_negative_definite(const Eigen::MatrixXd& M, double margin);
+
+}  // namespace hinf::certify

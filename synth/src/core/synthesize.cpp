@@ -1,0 +1,243 @@
+// The synthesis pipeline (SPEC §2): pre-flight checks, Theorem 1 / Corollary 1 by the
+// barrier method, recovery (eq. 21), and the independent certificate.
+#include <cmath>
+#include <sstream>
+
+#include "barrier/path_following.hpp"
+#include "lmi/sdpa_format.hpp"
+#include "certify/dense_lmi.hpp"
+#include "hinf/synth/error_system.hpp"
+#include "hinf/synth/hinf_norm.hpp"
+#include "hinf/synth/stability.hpp"
+#include "hinf/synth/synthesis.hpp"
+#include "model/theorem1.hpp"
+
+namespace hinf::synth {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+
+// Pre-flight (USER-PAIN #10): the error system contains the plant state, so the plant
+// must be Schur stable for every admissible F (SPEC §1). Name the offending mode.
+void preflight(const Plant& plant, const Settings& settings) {
+  const Eigen::EigenSolver<MatrixXd> es(plant.A, false);
+  const Eigen::VectorXcd ev = es.eigenvalues();
+  int worst = 0;
+  for (int i = 1; i < ev.size(); ++i)
+    if (std::abs(ev(i)) > std::abs(ev(worst))) worst = i;
+  const double rho = std::abs(ev(worst));
+  if (!(rho < 1.0)) {
+    throw Error(ErrorCode::Infeasible,
+                "plant is not Schur stable: spectral radius of A is " + fmt(rho) + " (eigenvalue " +
+                    fmt(ev(worst).real()) + (ev(worst).imag() >= 0 ? " + " : " - ") +
+                    fmt(std::abs(ev(worst).imag())) +
+                    "i); the filtering error contains the plant state, so no filter can make it "
+                    "stable (SPEC §1)");
+  }
+  if (plant.uncertain()) {
+    // The zero filter's error system has the plant's A + HFE as its top-left block.
+    Filter zero{MatrixXd::Zero(plant.n(), plant.n()), MatrixXd::Zero(plant.n(), plant.m()),
+                MatrixXd::Zero(plant.l(), plant.n())};
+    const StabilitySample s =
+        sampled_robust_stability(plant, zero, settings.stability_samples, settings.seed);
+    if (!(s.max_spectral_radius < 1.0)) {
+      throw Error(ErrorCode::Infeasible,
+                  "plant is not robustly Schur stable: for an admissible F (‖F‖ ≤ 1) the spectral "
+                  "radius of A + H F E is " + fmt(s.max_spectral_radius) +
+                  " (nominal " + fmt(rho) + "); reduce the uncertainty (H, E) or stabilise the plant");
+    }
+  }
+}
+
+SolverStatus fail_status(const barrier::SdpSolution& s, ErrorCode& code) {
+  code = s.status == SolverStatus::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
+  return s.status;
+}
+
+struct AnalysisSolution {
+  double g = 0;
+  MatrixXd P;
+  double lambda = 0;
+  barrier::SdpSolution sdp;
+};
+
+AnalysisSolution solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
+  const double s = model::he_balance(plant);
+  model::AnalysisLmi A = model::build_analysis_lmi(plant, filter, s);
+  VectorXd c = VectorXd::Zero(A.lmi.num_params());
+  c(A.lmi.variable(A.g).offset) = 1.0;
+  Settings st = settings;
+  st.relative_gap_tol = std::min(settings.relative_gap_tol, 1e-8);
+  AnalysisSolution out;
+  out.sdp = barrier::minimize_linear(A.lmi, c, st);
+  if (out.sdp.status != SolverStatus::Solved) {
+    ErrorCode code;
+    fail_status(out.sdp, code);
+    throw Error(code, "robust analysis LMI (SPEC §2 check 4): " +
+                          std::string(solver_status_message(out.sdp.status)) +
+                          (out.sdp.detail.empty() ? "" : ": " + out.sdp.detail));
+  }
+  out.g = out.sdp.objective;
+  out.P = A.lmi.value(A.P, out.sdp.x);
+  out.lambda = plant.uncertain() ? out.sdp.x(A.lmi.variable(A.lambda).offset) / (s * s) : 0.0;
+  return out;
+}
+
+}  // namespace
+
+double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings) {
+  validate_plant(plant);
+  settings.validate();
+  return std::sqrt(solve_analysis(plant, filter, settings).g);
+}
+
+Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
+                           const Settings& settings) {
+  Certificate c;
+  c.gamma = gamma;
+  c.norm_A_F = filter.A_F.norm();
+  c.norm_B_F = filter.B_F.norm();
+  c.norm_C_F = filter.C_F.norm();
+  // check 2: Schur stability, nominal and sampled admissible F
+  c.spectral_radius_nominal = spectral_radius(error_system(plant, filter).A);
+  const StabilitySample ss =
+      sampled_robust_stability(plant, filter, settings.stability_samples, settings.seed);
+  c.spectral_radius_sampled_max = ss.max_spectral_radius;
+  c.stability_samples = ss.samples;
+  c.schur_stable = c.spectral_radius_nominal < 1 && ss.max_spectral_radius < 1;
+  if (!c.schur_stable) return c;  // the norms below are undefined
+  // check 3: nominal H∞ norm by the symplectic-pencil algorithm (no LMI, no grid)
+  const HinfNorm hn = discrete_hinf_norm(error_system(plant, filter), 1e-10);
+  c.hinf_norm_nominal = hn.norm;
+  c.hinf_norm_peak_frequency = hn.peak_frequency;
+  c.hinf_norm_ok = hn.norm <= gamma;
+  // check 4: robust analysis LMI (its own solve), then verified densely at γ
+  AnalysisSolution an;
+  try {
+    an = solve_analysis(plant, filter, settings);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::Infeasible) throw;
+    c.robust_bound = INFINITY;  // no quadratic certificate for this filter at any γ
+    return c;
+  }
+  c.robust_bound = std::sqrt(an.g);
+  const certify::DefinitenessCheck d =
+      certify::check_negative_definite(certify::analysis_matrix(plant, filter, an.P, an.lambda, gamma * gamma), 0.0);
+  c.robust_lmi_max_eig_relative = d.max_eig_relative;
+  c.robust_feasible_at_gamma = an.g <= gamma * gamma && d.negative_definite;
+  c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
+  return c;
+}
+
+SynthesisResult synthesize(const Plant& plant, const Settings& settings,
+                           const barrier::IterationObserver& observer) {
+  validate_plant(plant);
+  settings.validate();
+  preflight(plant, settings);
+
+  const double s = model::he_balance(plant);
+  model::Theorem1Lmi T = model::build_theorem1(plant, s);
+  VectorXd c = VectorXd::Zero(T.lmi.num_params());
+  c(T.lmi.variable(T.g).offset) = 1.0;
+  const barrier::SdpSolution sol = barrier::minimize_linear(T.lmi, c, settings, VectorXd(), observer);
+
+  SynthesisResult res;
+  res.solver.status = sol.status;
+  res.solver.newton_iterations = sol.newton_total;
+  res.solver.phase1_iterations = sol.newton_phase1;
+  res.solver.centerings = sol.centerings;
+  res.solver.relative_gap = sol.relative_gap;
+  res.solver.dual_bound_gamma_squared = sol.objective - sol.gap;
+  res.solver.he_balance = s;
+  res.solver.lmi_margin = settings.lmi_margin;
+  res.solver.time_s = sol.elapsed_s;
+  res.solver.lmi_order = T.lmi.order();
+  res.solver.variables = T.lmi.num_params();
+  if (sol.status != SolverStatus::Solved) {
+    ErrorCode code;
+    fail_status(sol, code);
+    std::string msg = std::string("Theorem 1 LMI: ") + solver_status_message(sol.status);
+    if (!sol.detail.empty()) msg += ": " + sol.detail;
+    if (code == ErrorCode::Infeasible)
+      msg += " (the plant is Schur stable, so the uncertainty bound H, E is too large for a "
+             "quadratic certificate)";
+    throw Error(code, msg);
+  }
+
+  // Recovery, SPEC eq. (21): A_F = S⁻¹Ā_F, B_F = S⁻¹B̄_F, C_F = C̄_F (Cholesky solves).
+  certify::Theorem1Point pt;
+  pt.R = T.lmi.value(T.R, sol.x);
+  pt.S = T.lmi.value(T.S, sol.x);
+  pt.AF_bar = T.lmi.value(T.AFbar, sol.x);
+  pt.BF_bar = T.lmi.value(T.BFbar, sol.x);
+  pt.CF_bar = T.lmi.value(T.CFbar, sol.x);
+  pt.lambda = plant.uncertain() ? sol.x(T.lmi.variable(T.lambda).offset) / (s * s) : 0.0;
+  pt.g = sol.objective;
+  const Eigen::LLT<MatrixXd> Sllt(pt.S);
+  if (Sllt.info() != Eigen::Success)
+    throw Error(ErrorCode::NumericalFailure, "recovery: S is not positive definite at the solution");
+  res.filter.A_F = Sllt.solve(pt.AF_bar);
+  res.filter.B_F = Sllt.solve(pt.BF_bar);
+  res.filter.C_F = pt.CF_bar;
+
+  // The bound to certify: the solver's γ², raised to the analysis LMI's own optimum if
+  // that is (within its accuracy) above it — every check below then holds at this γ.
+  const AnalysisSolution an = solve_analysis(plant, res.filter, settings);
+  if (an.g > pt.g * (1 + 1e-6))
+    throw Error(ErrorCode::NumericalFailure,
+                "certificate: the robust analysis of the recovered filter gives γ² = " + fmt(an.g) +
+                    ", above the synthesis value " + fmt(pt.g));
+  const double g_cert = std::max(pt.g, an.g);
+  res.gamma_squared = g_cert;
+  res.gamma = std::sqrt(g_cert);
+
+  // check 1: LMI (20) at the returned point (with g = certified γ²), assembled densely
+  pt.g = g_cert;
+  const certify::DefinitenessCheck d1 =
+      certify::check_negative_definite(certify::theorem1_matrix(plant, pt), 0.0);
+  res.certificate = certify_filter(plant, res.filter, res.gamma, settings);
+  Certificate& cert = res.certificate;
+  cert.lmi_max_eig = d1.max_eig;
+  cert.lmi_max_eig_relative = d1.max_eig_relative;
+  cert.lmi_negative_definite = d1.negative_definite;
+  const Eigen::VectorXd eS = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.S, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::VectorXd eRS =
+      Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.R - pt.S, Eigen::EigenvaluesOnly).eigenvalues();
+  cert.cond_S = eS(eS.size() - 1) / eS(0);
+  cert.cond_R_minus_S = eRS(0) > 0 ? eRS(eRS.size() - 1) / eRS(0) : INFINITY;
+  cert.passed = cert.passed && cert.lmi_negative_definite;
+  if (!cert.passed) {
+    std::string why;
+    if (!cert.lmi_negative_definite) why += " LMI (20) not negative definite (max eigenvalue " + fmt(cert.lmi_max_eig) + ");";
+    if (!cert.schur_stable) why += " error system not Schur stable (spectral radius " + fmt(std::max(cert.spectral_radius_nominal, cert.spectral_radius_sampled_max)) + ");";
+    if (cert.schur_stable && !cert.hinf_norm_ok) why += " nominal H∞ norm " + fmt(cert.hinf_norm_nominal) + " > γ " + fmt(res.gamma) + ";";
+    if (cert.schur_stable && !cert.robust_feasible_at_gamma) why += " robust analysis LMI infeasible at γ;";
+    throw Error(ErrorCode::NumericalFailure, "certificate failed, no filter written:" + why);
+  }
+  return res;
+}
+
+SynthesisResult synthesize(const Plant& plant, const Settings& settings) {
+  return synthesize(plant, settings, nullptr);
+}
+
+std::string theorem1_sdpa(const Plant& plant, const std::string& comment) {
+  validate_plant(plant);
+  const double s = model::he_balance(plant);
+  model::Theorem1Lmi T = model::build_theorem1(plant, s);
+  VectorXd c = VectorXd::Zero(T.lmi.num_params());
+  c(T.lmi.variable(T.g).offset) = 1.0;
+  return lmi::to_sdpa_sparse(T.lmi, c, comment + "\nvariable " + std::to_string(T.lmi.variable(T.g).offset + 1) +
+                                           " is gamma^2; H/E balance s = " + std::to_string(s));
+}
+
+}  // namespace hinf::synth
