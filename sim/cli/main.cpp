@@ -83,6 +83,12 @@ int run(int argc, char** argv) {
       const auto& src = std::string(name) == "hinf" ? s.filters.hinf : s.filters.published;
       if (!src) continue;
       ObtainedGains g = obtain_gains(*src, verbose);
+      // The sim feeds y = Cartesian position (m = 3) and reads the whole state (l = 6).
+      if (g.gains.B_F.cols() != 3 || g.gains.C_F.rows() != 6)
+        throw ScenarioError("filters." + std::string(name) + ": " + g.origin + ": B_F has " +
+                            std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
+                            std::to_string(g.gains.C_F.rows()) +
+                            " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
       if (verbose) std::cerr << "hinf-sim: " << name << ": " << g.origin << "\n";
       (std::string(name) == "hinf" ? setup.hinf : setup.published) = g.gains;
       context.gains[name] = {g.origin, g.gamma};

@@ -2,20 +2,21 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <thread>
 
 namespace hinf::sim {
 
 std::string temporary_path_for(const std::string& final_path) {
-  static std::atomic<unsigned long> counter{0};
+  // Unique per (final name, process, thread): a thread writes one file at a time.
   const std::filesystem::path p(final_path);
   const std::string name = "." + p.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
-                           std::to_string(counter.fetch_add(1));
+                           std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
   return (p.parent_path() / name).string();
 }
 

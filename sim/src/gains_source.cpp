@@ -2,6 +2,7 @@
 
 #include <hinf/runtime_yaml/gains_file.hpp>
 #include <hinf/synth/config.hpp>
+#include <hinf/synth/gains_output.hpp>
 #include <hinf/synth/synthesis.hpp>
 
 #include <fstream>
@@ -36,7 +37,8 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
   const hinf::synth::SynthesisResult r = hinf::synth::synthesize(config.plant, config.settings);
   out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F};
   out.gamma = r.gamma;
-  out.gains_yaml = format_gains_yaml(out.gains, r.gamma, "hinf-sim (synthesised on the fly)", config.sha256);
+  // The synthesis library's own writer: the same file `hinf-synth solve -o` writes.
+  out.gains_yaml = hinf::synth::format_gains_yaml(r, {source.synthesize_path, config.sha256});
   out.origin = "synthesised from " + source.synthesize_path;
   return out;
 #endif

@@ -1,9 +1,12 @@
-// Generated C code: compiled with gcc and clang under strict warnings, linked into
+// Generated C code (the compiled-code tests generate it with the real `hinf-synth codegen`
+// from seeded random gains the generator has never seen, and the paper's gains):
+// compiled with gcc and clang under strict warnings, linked into
 // a harness and compared with an independent Eigen evaluation of SPEC eq. (12);
 // no heap / libm symbols; cppcheck clean; two filters in one binary; deterministic.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <regex>
@@ -161,17 +164,24 @@ double float_error_bound(const Reference& r) {
   return max_ca * e0 + sum_ca * delta + gam(n) * norm(r.C) * X;
 }
 
-// Generates, compiles with each compiler, checks symbols, runs the generated check
+// The program whose `codegen` subcommand is tested: hinf-synth, or $HINF_CODEGEN_CLI.
+std::string codegen_program() {
+  const char* env = std::getenv("HINF_CODEGEN_CLI");
+  return env != nullptr && *env != '\0' ? env : HINF_TEST_CODEGEN_CLI;
+}
+
+// Generates with `hinf-synth codegen`, compiles with each compiler, checks symbols, runs the generated check
 // driver and the harness, and compares with the Eigen reference.
 void check_generated(const GainsFile& g, const std::string& prefix, Real real,
                      std::uint64_t seed) {
   const bool is_float = real == Real::Float;
   TempDir dir;
-  CodegenOptions opt;
-  opt.prefix = prefix;
-  opt.real = real;
-  opt.generator = "hinf-synth test";
-  hinf::synth::write_generated_files(hinf::synth::generate_c(g, opt), dir.path());
+  // Through the real command line: gains file (17 digits, exact round trip) -> hinf-synth codegen.
+  hinf::test::write_text(dir / "gains.yaml", hinf::test::gains_yaml(g));
+  const auto gen = hinf::test::run(codegen_program() + " codegen " + (dir / "gains.yaml") +
+                                   " --prefix " + prefix + " --out " + dir.path() +
+                                   (is_float ? " --real float" : " --real double"));
+  ASSERT_EQ(gen.exit_code, 0) << gen.output;
   const Reference ref = make_reference(g, is_float, seed);
   {
     std::ostringstream in;

@@ -1,5 +1,5 @@
 // `hinf-synth codegen` from the command line: exit codes, messages, files left.
-// Runs the stand-in hinf_codegen_cli, or the program named by $HINF_CODEGEN_CLI.
+// Runs the real hinf-synth, or the program named by $HINF_CODEGEN_CLI.
 #include <gtest/gtest.h>
 
 #include <chrono>

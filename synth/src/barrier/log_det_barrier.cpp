@@ -5,8 +5,8 @@
 namespace hinf::barrier {
 
 LogDetBarrier::LogDetBarrier(const lmi::LmiProblem& lmi, Eigen::VectorXd c, double margin,
-                             double radius, bool phase1)
-    : lmi_(lmi), c_(std::move(c)), margin_(margin), radius_(radius), phase1_(phase1),
+                             double radius, bool phase1, double phase1_weight)
+    : lmi_(lmi), c_(std::move(c)), margin_(margin), radius_(radius), phase1_(phase1), eta_(phase1_weight),
       n_(lmi.num_params()), N_(lmi.order()) {}
 
 static bool same(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
@@ -42,7 +42,18 @@ bool LogDetBarrier::factor(const Eigen::VectorXd& z) {
 }
 
 double LogDetBarrier::linear_objective(const Eigen::VectorXd& z) const {
-  return phase1_ ? z(n_) : c_.dot(z.head(n_));
+  return phase1_ ? z(n_) + eta_ * c_.dot(z.head(n_)) : c_.dot(z.head(n_));
+}
+
+Eigen::VectorXd LogDetBarrier::objective_gradient() const {
+  Eigen::VectorXd cz = Eigen::VectorXd::Zero(dim());
+  if (phase1_) {
+    cz.head(n_) = eta_ * c_;
+    cz(n_) = 1.0;
+  } else {
+    cz.head(n_) = c_;
+  }
+  return cz;
 }
 
 bool LogDetBarrier::value(const Eigen::VectorXd& z, double& f) {
@@ -90,9 +101,7 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
 
 bool LogDetBarrier::gradient(const Eigen::VectorXd& z, Eigen::VectorXd& g) {
   if (!derivatives(z)) return false;
-  g = grad_phi_;
-  if (phase1_) g(n_) += t_;
-  else g.head(n_) += t_ * c_;
+  g = grad_phi_ + t_ * objective_gradient();
   return true;
 }
 
@@ -115,9 +124,7 @@ bool LogDetBarrier::newton_decrement2(const Eigen::VectorXd& z, double& lambda2)
 
 bool LogDetBarrier::path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) {
   if (!derivatives(z)) return false;
-  Eigen::VectorXd cz = Eigen::VectorXd::Zero(dim());
-  if (phase1_) cz(n_) = 1.0;
-  else cz.head(n_) = c_;
+  const Eigen::VectorXd cz = objective_gradient();
   Eigen::LDLT<Eigen::MatrixXd> H(hess_);
   if (H.info() != Eigen::Success) return false;
   dz = -H.solve(cz);

@@ -12,8 +12,10 @@ namespace hinf::barrier {
 
 class LogDetBarrier {
  public:
+  // phase1_weight η: phase I minimises s + η·cᵀx (η > 0 keeps the phase-I centre from
+  // drifting to huge objective values, which phase II would then have to undo).
   LogDetBarrier(const lmi::LmiProblem& lmi, Eigen::VectorXd c, double margin, double radius,
-                bool phase1);
+                bool phase1, double phase1_weight = 0.0);
 
   int dim() const { return n_ + (phase1_ ? 1 : 0); }
   bool phase1() const { return phase1_; }
@@ -31,6 +33,8 @@ class LogDetBarrier {
   bool path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
 
   double linear_objective(const Eigen::VectorXd& z) const;
+  // ∇ of the linear objective
+  Eigen::VectorXd objective_gradient() const;
   // W = (slack)⁻¹ at the last factored point (for the dual bound).
   const Eigen::MatrixXd& W() const { return W_; }
   bool inside(const Eigen::VectorXd& z) { return factor(z); }
@@ -45,6 +49,7 @@ class LogDetBarrier {
   Eigen::VectorXd c_;
   double margin_, radius_;
   bool phase1_;
+  double eta_;
   int n_;
   int N_;
   double t_ = 1.0;

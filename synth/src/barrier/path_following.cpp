@@ -11,6 +11,7 @@ namespace hinf::barrier {
 namespace {
 
 double PHASE1_RADIUS = 1e8;
+double PHASE1_WEIGHT = 1e-3;
 
 using Clock = std::chrono::steady_clock;
 
@@ -31,6 +32,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
   IpoptCentering ipopt;
   Eigen::VectorXd x0 = x0_in.size() == n ? x0_in : Eigen::VectorXd::Zero(n);
 
+  double phase1_weight = 0;
   auto remaining = [&] { return settings.time_limit_s - seconds_since(start); };
   auto out_of_budget = [&](SdpSolution& s) {
     if (s.newton_total >= settings.max_iterations) {
@@ -50,9 +52,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
   auto follow = [&](LogDetBarrier& b, Eigen::VectorXd z, int phase, bool& ok) -> Eigen::VectorXd {
     ok = false;
     // initial t (Boyd & Vandenberghe §11.3.1): argmin_t ‖t·c + ∇φ‖_{H⁻¹}
-    Eigen::VectorXd cz = Eigen::VectorXd::Zero(b.dim());
-    if (phase == 1) cz(n) = 1;
-    else cz.head(n) = c;
+    const Eigen::VectorXd cz = b.objective_gradient();
     b.set_t(0.0);
     Eigen::VectorXd gphi, dz;
     double t = 0;
@@ -62,6 +62,9 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       if (chc > 0) t = -chg / chc;
     }
     const double obj0 = std::abs(b.linear_objective(z));
+    Eigen::VectorXd last_centred;
+    double last_gap = 0;
+    bool have_centred = false;
     if (!(t > 0) || !std::isfinite(t)) t = nu / std::max(obj0, 1e-8);
     t = std::max(t, 1e-3 * nu / std::max(obj0, 1e-8));
     for (int k = 0;; ++k) {
@@ -76,7 +79,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       if (phase == 1) sol.newton_phase1 += r.iterations;
       ++sol.centerings;
       z = r.z;
-      const double obj = b.linear_objective(z);
+      const double obj = phase == 1 ? z(n) : b.linear_objective(z);
       // gap bound (N+1)/t, plus λ²/t when centring stopped at the round-off floor
       const double gap = (nu + (r.noise_limited ? r.lambda2 : 0.0)) / t;
       if (observer)
@@ -86,11 +89,23 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
         return z;
       }
       if (!r.centred && !r.stopped_early) {
+        // Late in phase II the centring may fail on round-off; the last centred point is
+        // still a valid answer with its own (larger) gap if that gap is within 100× tol.
+        if (phase == 2 && have_centred &&
+            last_gap <= 100 * settings.relative_gap_tol * std::max(std::abs(b.linear_objective(last_centred)), 1e-12)) {
+          sol.gap = last_gap;
+          sol.detail = "final centring stopped by round-off; returned the last centred point";
+          ok = true;
+          return last_centred;
+        }
         if (out_of_budget(sol)) return z;
         sol.status = SolverStatus::NumericalError;
         sol.detail = "centring failed in phase " + std::to_string(phase) + " at t = " +
                      std::to_string(t) + " (Ipopt: " + r.ipopt_status + ")";
         return z;
+      }
+      if (phase == 1 && phase1_weight > 0 && obj - gap > 0) {
+        return z;  // converged with s > 0 under the objective penalty: retry without it
       }
       if (phase == 1 && obj - gap > 0) {
         // certified: even the dual bound on s* is positive
@@ -101,6 +116,9 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       }
       sol.t = t;
       sol.gap = gap;
+      last_centred = z;
+      last_gap = gap;
+      have_centred = true;
       if (phase == 2 && gap <= settings.relative_gap_tol * std::max(std::abs(obj), 1e-12)) {
         ok = true;
         return z;
@@ -134,12 +152,16 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       // A small ball in phase I keeps its analytic centre near x0 instead of at the
       // feasibility radius (which would make phase II start with huge variables).
       const double r1 = std::min(settings.feasibility_radius, PHASE1_RADIUS);
-      LogDetBarrier b1(lmi, c, settings.lmi_margin, r1, true);
       Eigen::VectorXd z(n + 1);
-      z.head(n) = x;
-      z(n) = lmax + 1.0;
       bool ok = false;
-      z = follow(b1, z, 1, ok);
+      for (double eta : {PHASE1_WEIGHT, 0.0}) {
+        phase1_weight = eta;
+        LogDetBarrier b1(lmi, c, settings.lmi_margin, r1, true, eta);
+        z.head(n) = x;
+        z(n) = lmax + 1.0;
+        z = follow(b1, z, 1, ok);
+        if (ok || sol.status != SolverStatus::NotRun) break;
+      }
       sol.phase1_s = z(n);
       if (!ok) {
         if (sol.status == SolverStatus::NotRun) {

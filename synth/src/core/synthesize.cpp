@@ -100,8 +100,10 @@ double robust_bound(const Plant& plant, const Filter& filter, const Settings& se
   return std::sqrt(solve_analysis(plant, filter, settings).g);
 }
 
-Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
-                           const Settings& settings) {
+namespace {
+// Checks 2–4; `analysis` is the robust analysis of this filter when the caller has it.
+Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings,
+                    const AnalysisSolution* analysis) {
   Certificate c;
   c.gamma = gamma;
   c.norm_A_F = filter.A_F.norm();
@@ -123,7 +125,7 @@ Certificate certify_filter(const Plant& plant, const Filter& filter, double gamm
   // check 4: robust analysis LMI (its own solve), then verified densely at γ
   AnalysisSolution an;
   try {
-    an = solve_analysis(plant, filter, settings);
+    an = analysis ? *analysis : solve_analysis(plant, filter, settings);
   } catch (const Error& e) {
     if (e.code() != ErrorCode::Infeasible) throw;
     c.robust_bound = INFINITY;  // no quadratic certificate for this filter at any γ
@@ -136,6 +138,14 @@ Certificate certify_filter(const Plant& plant, const Filter& filter, double gamm
   c.robust_feasible_at_gamma = an.g <= gamma * gamma && d.negative_definite;
   c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
   return c;
+}
+}  // namespace
+
+Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
+                           const Settings& settings) {
+  validate_plant(plant);
+  settings.validate();
+  return certify(plant, filter, gamma, settings, nullptr);
 }
 
 SynthesisResult synthesize(const Plant& plant, const Settings& settings,
@@ -173,15 +183,38 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
     throw Error(code, msg);
   }
 
+  res.solver.optimal_gamma = std::sqrt(sol.objective);
+  // γ back-off (USER-PAIN #6): at γ_b = (1 + b)·γ*, the point of largest LMI margin,
+  // which keeps S and R − S away from singular and the recovered gains moderate.
+  const model::Theorem1Lmi* Tp = &T;
+  VectorXd x = sol.x;
+  double g_point = sol.objective;
+  model::Theorem1Lmi Tb;
+  if (settings.gamma_backoff > 0) {
+    g_point = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
+    Tb = model::build_theorem1_backoff(plant, s, g_point);
+    VectorXd cb = VectorXd::Zero(Tb.lmi.num_params());
+    cb(Tb.lmi.variable(Tb.margin).offset) = 1.0;
+    const barrier::SdpSolution sb = barrier::minimize_linear(Tb.lmi, cb, settings);
+    res.solver.newton_iterations += sb.newton_total;
+    res.solver.time_s += sb.elapsed_s;
+    if (sb.status != SolverStatus::Solved || !(sb.objective < 0))
+      throw Error(ErrorCode::NumericalFailure,
+                  std::string("gamma back-off: maximising the LMI margin at γ = ") + fmt(std::sqrt(g_point)) +
+                      " failed: " + solver_status_message(sb.status) + (sb.detail.empty() ? "" : ": " + sb.detail));
+    Tp = &Tb;
+    x = sb.x;
+  }
+
   // Recovery, SPEC eq. (21): A_F = S⁻¹Ā_F, B_F = S⁻¹B̄_F, C_F = C̄_F (Cholesky solves).
   certify::Theorem1Point pt;
-  pt.R = T.lmi.value(T.R, sol.x);
-  pt.S = T.lmi.value(T.S, sol.x);
-  pt.AF_bar = T.lmi.value(T.AFbar, sol.x);
-  pt.BF_bar = T.lmi.value(T.BFbar, sol.x);
-  pt.CF_bar = T.lmi.value(T.CFbar, sol.x);
-  pt.lambda = plant.uncertain() ? sol.x(T.lmi.variable(T.lambda).offset) / (s * s) : 0.0;
-  pt.g = sol.objective;
+  pt.R = Tp->lmi.value(Tp->R, x);
+  pt.S = Tp->lmi.value(Tp->S, x);
+  pt.AF_bar = Tp->lmi.value(Tp->AFbar, x);
+  pt.BF_bar = Tp->lmi.value(Tp->BFbar, x);
+  pt.CF_bar = Tp->lmi.value(Tp->CFbar, x);
+  pt.lambda = plant.uncertain() ? x(Tp->lmi.variable(Tp->lambda).offset) / (s * s) : 0.0;
+  pt.g = g_point;
   const Eigen::LLT<MatrixXd> Sllt(pt.S);
   if (Sllt.info() != Eigen::Success)
     throw Error(ErrorCode::NumericalFailure, "recovery: S is not positive definite at the solution");
@@ -204,7 +237,7 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
   pt.g = g_cert;
   const certify::DefinitenessCheck d1 =
       certify::check_negative_definite(certify::theorem1_matrix(plant, pt), 0.0);
-  res.certificate = certify_filter(plant, res.filter, res.gamma, settings);
+  res.certificate = certify(plant, res.filter, res.gamma, settings, &an);
   Certificate& cert = res.certificate;
   cert.lmi_max_eig = d1.max_eig;
   cert.lmi_max_eig_relative = d1.max_eig_relative;

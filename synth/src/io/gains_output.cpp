@@ -93,6 +93,7 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   kv(out, "newton_iterations", s.newton_iterations);
   kv(out, "phase1_iterations", s.phase1_iterations);
   kv(out, "centerings", s.centerings);
+  kv(out, "optimal_gamma", s.optimal_gamma);
   kv(out, "relative_gap", s.relative_gap);
   kv(out, "lower_bound_gamma_squared", s.dual_bound_gamma_squared);
   kv(out, "lmi_order", s.lmi_order);

@@ -15,12 +15,15 @@ double he_balance(const Plant& plant) {
   return std::sqrt(e / h);
 }
 
-Theorem1Lmi build_theorem1(const Plant& P, double s) {
+namespace {
+Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
   const bool unc = P.uncertain();
   std::vector<int> blocks{n, n, n, n, p, q, l};
   if (unc) blocks.push_back(P.j());
-  Theorem1Lmi T{lmi::LmiProblem(blocks), {}, {}, {}, {}, {}, {}, {}, s};
+  Theorem1Lmi T;
+  T.lmi = lmi::LmiProblem(blocks);
+  T.he_scale = s;
   auto& L = T.lmi;
   T.R = L.add_symmetric("R", n);
   T.S = L.add_symmetric("S", n);
@@ -28,7 +31,8 @@ Theorem1Lmi build_theorem1(const Plant& P, double s) {
   T.BFbar = L.add_full("BF_bar", n, m);
   T.CFbar = L.add_full("CF_bar", l, n);
   if (unc) T.lambda = L.add_scalar("lambda");
-  T.g = L.add_scalar("gamma_squared");
+  if (!g_fixed) T.g = L.add_scalar("gamma_squared");
+  else T.margin = L.add_scalar("margin");
 
   const MatrixXd In = MatrixXd::Identity(n, n);
   const MatrixXd Hs = s * P.H, Es = P.E / s;
@@ -58,11 +62,25 @@ Theorem1Lmi build_theorem1(const Plant& P, double s) {
   L.add_term(3, 3, T.S, -In, In);
   L.add_term(3, 6, T.CFbar, -In, MatrixXd::Identity(l, l), /*transpose=*/true);
   // rows 5–8: −gI, −gI, −I, −λI
-  L.add_scalar_term(4, 4, T.g, -MatrixXd::Identity(p, p));
-  L.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
+  if (g_fixed) {
+    L.add_constant(4, 4, -*g_fixed * MatrixXd::Identity(p, p));
+    L.add_constant(5, 5, -*g_fixed * MatrixXd::Identity(q, q));
+    for (int b = 0; b < L.num_blocks(); ++b)
+      L.add_scalar_term(b, b, T.margin, -MatrixXd::Identity(L.block_size(b), L.block_size(b)));
+  } else {
+    L.add_scalar_term(4, 4, T.g, -MatrixXd::Identity(p, p));
+    L.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
+  }
   L.add_constant(6, 6, -MatrixXd::Identity(l, l));
   if (unc) L.add_scalar_term(7, 7, T.lambda, -MatrixXd::Identity(P.j(), P.j()));
   return T;
+}
+}  // namespace
+
+Theorem1Lmi build_theorem1(const Plant& P, double s) { return build(P, s, nullptr); }
+
+Theorem1Lmi build_theorem1_backoff(const Plant& P, double s, double g_fixed) {
+  return build(P, s, &g_fixed);
 }
 
 AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
@@ -81,7 +99,9 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
   Cb << P.L, -F.C_F;
   std::vector<int> blocks{n2, n2, p + q, l};
   if (unc) blocks.push_back(P.j());
-  AnalysisLmi A{lmi::LmiProblem(blocks), {}, {}, {}, s};
+  AnalysisLmi A;
+  A.lmi = lmi::LmiProblem(blocks);
+  A.he_scale = s;
   auto& L = A.lmi;
   A.P = L.add_symmetric("P", n2);
   if (unc) A.lambda = L.add_scalar("lambda");

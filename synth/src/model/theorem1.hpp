@@ -11,16 +11,21 @@ namespace hinf::model {
 double he_balance(const synth::Plant& plant);
 
 struct Theorem1Lmi {
-  lmi::LmiProblem lmi;
+  lmi::LmiProblem lmi{std::vector<int>{}};
   lmi::VarId R, S, AFbar, BFbar, CFbar, lambda, g;  // lambda invalid without uncertainty
+  lmi::VarId margin;  // only in the γ back-off problem (g fixed): M(x) ⪯ margin·I
   double he_scale = 1;  // the LMI uses H' = sH, E' = E/s, λ' = λ s²
 };
 
 // Blocks n, n, n, n, p, q, l, j (the last only with uncertainty).
 Theorem1Lmi build_theorem1(const synth::Plant& plant, double he_scale);
 
+// The γ back-off problem (USER-PAIN #6): g = γ_b² fixed, and a scalar `margin` with
+// M(x) ⪯ margin·I on every block; minimising `margin` maximises the LMI's margin.
+Theorem1Lmi build_theorem1_backoff(const synth::Plant& plant, double he_scale, double g_fixed);
+
 struct AnalysisLmi {
-  lmi::LmiProblem lmi;
+  lmi::LmiProblem lmi{std::vector<int>{}};
   lmi::VarId P, lambda, g;
   double he_scale = 1;
 };

@@ -6,12 +6,12 @@ namespace hinf::synth {
 
 struct Settings {
   // Strictness margin of the LMI, relative to the equilibrated problem: the solver
-  // enforces −M(x) ⪰ lmi_margin·I (USER-PAIN #2, #3). Refused below 100·relative_gap_tol·1e-3.
+  // enforces −M(x) ⪰ lmi_margin·I (USER-PAIN #2, #3). Refused below 1e-14 (solver tolerance).
   double lmi_margin = 1e-9;
   // Stop when the barrier's duality gap (N+1)/t is below this fraction of γ².
   double relative_gap_tol = 1e-7;
   // Factor by which the barrier parameter t grows between centring steps.
-  double barrier_growth = 20.0;
+  double barrier_growth = 50.0;
   // Feasibility radius on the equilibrated variables (LMI Lab's "feasradius").
   double feasibility_radius = 1e8;
   // Newton iterations allowed in one centring step (Ipopt's max_iter).
@@ -20,8 +20,8 @@ struct Settings {
   int max_iterations = 600;
   // Wall-clock limit for one solve, seconds.
   double time_limit_s = 600.0;
-  // Multiply the optimal γ by (1 + gamma_backoff) before recovering the filter;
-  // the back-off buys margin and a better-conditioned filter (USER-PAIN #6). 0 = off.
+  // γ back-off (USER-PAIN #6): if > 0, the filter is recovered at γ_b = (1 + gamma_backoff)·γ*
+  // from the point of largest LMI margin (better-conditioned S, R − S and gains). 0 = off.
   double gamma_backoff = 0.0;
   // Number of random admissible F(k) sampled in the Schur-stability check.
   int stability_samples = 64;

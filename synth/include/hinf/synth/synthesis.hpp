@@ -46,6 +46,7 @@ struct SolverInfo {
   double dual_bound_gamma_squared = 0;  // lower bound on γ*² from W/t
   double he_balance = 1;           // s with H ← sH, E ← E/s
   double lmi_margin = 0;           // margin enforced (equilibrated problem)
+  double optimal_gamma = 0;        // √(optimal γ²) of Corollary 1, before back-off/certification
   double time_s = 0;
   int lmi_order = 0;               // N
   int variables = 0;

@@ -1,0 +1,41 @@
+# cmake -DCONFIG_DIR=... -DGOLDEN_DIR=... [-DONLY=<config-stem>] -P golden_coverage.cmake
+# Fails (non-zero exit) if a shipped synthesis config has no golden gains file, or if a
+# golden file has no config. Runs at test time, so a config added without a golden file
+# fails `ctest` even before CMake is re-run.
+cmake_minimum_required(VERSION 3.16)  # script mode: policies (IN_LIST) as in the project
+include(${CMAKE_CURRENT_LIST_DIR}/golden_configs.cmake)
+if(NOT DEFINED CONFIG_DIR OR NOT DEFINED GOLDEN_DIR)
+  message(FATAL_ERROR "usage: cmake -DCONFIG_DIR=DIR -DGOLDEN_DIR=DIR [-DONLY=STEM] -P golden_coverage.cmake")
+endif()
+hinf_synthesis_configs(configs "${CONFIG_DIR}")
+if(NOT configs)
+  message(FATAL_ERROR "no synthesis configs found in ${CONFIG_DIR}")
+endif()
+set(problems "")
+set(expected_goldens "")
+foreach(c IN LISTS configs)
+  hinf_golden_for(g "${c}" "${GOLDEN_DIR}")
+  list(APPEND expected_goldens "${g}")
+  get_filename_component(name "${c}" NAME)
+  if(DEFINED ONLY AND NOT "${ONLY}" STREQUAL "" AND NOT "${name}" STREQUAL "${ONLY}.yaml")
+    continue()
+  endif()
+  if(NOT EXISTS "${g}")
+    string(APPEND problems "  ${c}: no golden gains file ${g}\n")
+  endif()
+endforeach()
+if(NOT DEFINED ONLY OR "${ONLY}" STREQUAL "")
+  file(GLOB goldens LIST_DIRECTORIES false "${GOLDEN_DIR}/*.yaml")
+  foreach(g IN LISTS goldens)
+    if(NOT g IN_LIST expected_goldens)
+      string(APPEND problems "  ${g}: golden file without a synthesis config in ${CONFIG_DIR}\n")
+    endif()
+  endforeach()
+endif()
+if(problems)
+  message(FATAL_ERROR "golden files out of step with the configs:\n${problems}"
+                      "Create or update them deliberately with scripts/regenerate-golden "
+                      "(see tests/golden/README.md).")
+endif()
+list(LENGTH configs n)
+message(STATUS "golden coverage: ${n} synthesis configs, each with a golden file")
