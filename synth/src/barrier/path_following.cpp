@@ -63,7 +63,9 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
     }
     const double obj0 = std::abs(b.linear_objective(z));
     Eigen::VectorXd last_centred;
-    double last_gap = 0;
+    double last_gap = 0, last_t = 0;
+    double growth = settings.barrier_growth;
+    int retries = 0;
     bool have_centred = false;
     if (!(t > 0) || !std::isfinite(t)) t = nu / std::max(obj0, 1e-8);
     t = std::max(t, 1e-3 * nu / std::max(obj0, 1e-8));
@@ -90,13 +92,23 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       }
       if (!r.centred && !r.stopped_early) {
         // Late in phase II the centring may fail on round-off; the last centred point is
-        // still a valid answer with its own (larger) gap if that gap is within 100× tol.
+        // still a valid answer with its own (larger) gap if that gap is within
+        // max(100·tol, 1e-5) relative; the gap actually achieved is reported.
         if (phase == 2 && have_centred &&
-            last_gap <= 100 * settings.relative_gap_tol * std::max(std::abs(b.linear_objective(last_centred)), 1e-12)) {
+            last_gap <= std::max(100 * settings.relative_gap_tol, 1e-5) *
+                            std::max(std::abs(b.linear_objective(last_centred)), 1e-12)) {
           sol.gap = last_gap;
           sol.detail = "final centring stopped by round-off; returned the last centred point";
           ok = true;
           return last_centred;
+        }
+        // Otherwise retry from the last centred point with a shorter step in t.
+        if (have_centred && retries < 4 && !out_of_budget(sol)) {
+          ++retries;
+          growth = std::sqrt(growth);
+          z = last_centred;
+          t = last_t * growth;
+          continue;
         }
         if (out_of_budget(sol)) return z;
         sol.status = SolverStatus::NumericalError;
@@ -118,6 +130,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       sol.gap = gap;
       last_centred = z;
       last_gap = gap;
+      last_t = t;
       have_centred = true;
       if (phase == 2 && gap <= settings.relative_gap_tol * std::max(std::abs(obj), 1e-12)) {
         ok = true;
@@ -125,7 +138,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       }
       if (out_of_budget(sol)) return z;
       // predictor along the central path: z + (t_new − t)·dz/dt, kept inside the domain
-      const double t_new = settings.barrier_growth * t;
+      const double t_new = growth * t;
       if (b.path_tangent(z, dz)) {
         double alpha = 1.0;
         Eigen::VectorXd step = (t_new - t) * dz;
