@@ -159,6 +159,8 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
     o.SetStringValue("derivative_test", "second-order");
     o.SetNumericValue("derivative_test_perturbation", 1e-7);
     o.SetNumericValue("derivative_test_tol", 1e-5);
+    // check at the given point: a random perturbation could leave the LMI cone
+    o.SetNumericValue("point_perturbation_radius", 0.0);
     o.SetIntegerValue("print_level", 4);
   }
   Ipopt::SmartPtr<CenteringTnlp> tnlp = new CenteringTnlp(barrier, z0, opt);
@@ -166,6 +168,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   if (opt.derivative_test) {
     o.SetStringValue("derivative_test", "none");
     o.SetIntegerValue("print_level", 0);
+    o.SetNumericValue("point_perturbation_radius", 10.0);  // Ipopt's default
   }
   CenteringResult r;
   r.z = tnlp->z_.size() == z0.size() ? tnlp->z_ : z0;
