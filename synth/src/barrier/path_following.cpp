@@ -10,8 +10,9 @@ namespace hinf::barrier {
 
 namespace {
 
-double PHASE1_RADIUS = 1e8;
-double PHASE1_WEIGHT = 1e-3;
+// Phase I: ball radius cap and the weight η of the objective in s + η·cᵀx.
+constexpr double kPhase1Radius = 1e8;
+constexpr double kPhase1Weight = 1e-3;
 
 using Clock = std::chrono::steady_clock;
 
@@ -164,10 +165,10 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
     if (lmax >= 0) {
       // A small ball in phase I keeps its analytic centre near x0 instead of at the
       // feasibility radius (which would make phase II start with huge variables).
-      const double r1 = std::min(settings.feasibility_radius, PHASE1_RADIUS);
+      const double r1 = std::min(settings.feasibility_radius, kPhase1Radius);
       Eigen::VectorXd z(n + 1);
       bool ok = false;
-      for (double eta : {PHASE1_WEIGHT, 0.0}) {
+      for (double eta : {kPhase1Weight, 0.0}) {
         phase1_weight = eta;
         LogDetBarrier b1(lmi, c, settings.lmi_margin, r1, true, eta);
         z.head(n) = x;

@@ -58,9 +58,8 @@ void preflight(const Plant& plant, const Settings& settings) {
   }
 }
 
-SolverStatus fail_status(const barrier::SdpSolution& s, ErrorCode& code) {
-  code = s.status == SolverStatus::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
-  return s.status;
+ErrorCode error_code_for(SolverStatus status) {
+  return status == SolverStatus::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
 }
 
 struct AnalysisSolution {
@@ -80,8 +79,7 @@ AnalysisSolution solve_analysis(const Plant& plant, const Filter& filter, const 
   AnalysisSolution out;
   out.sdp = barrier::minimize_linear(A.lmi, c, st);
   if (out.sdp.status != SolverStatus::Solved) {
-    ErrorCode code;
-    fail_status(out.sdp, code);
+    const ErrorCode code = error_code_for(out.sdp.status);
     throw Error(code, "robust analysis LMI (SPEC §2 check 4): " +
                           std::string(solver_status_message(out.sdp.status)) +
                           (out.sdp.detail.empty() ? "" : ": " + out.sdp.detail));
@@ -173,8 +171,7 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
   res.solver.lmi_order = T.lmi.order();
   res.solver.variables = T.lmi.num_params();
   if (sol.status != SolverStatus::Solved) {
-    ErrorCode code;
-    fail_status(sol, code);
+    const ErrorCode code = error_code_for(sol.status);
     std::string msg = std::string("Theorem 1 LMI: ") + solver_status_message(sol.status);
     if (!sol.detail.empty()) msg += ": " + sol.detail;
     if (code == ErrorCode::Infeasible)

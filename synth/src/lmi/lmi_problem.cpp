@@ -62,8 +62,7 @@ void LmiProblem::check_block(int r, int c, int rows, int cols, const char* what)
 static bool is_scaled_identity(const Eigen::MatrixXd& M, double& alpha) {
   if (M.rows() != M.cols() || M.rows() == 0) return false;
   alpha = M(0, 0);
-  return M.isApprox(alpha * Eigen::MatrixXd::Identity(M.rows(), M.cols()), 0.0) ||
-         (M - alpha * Eigen::MatrixXd::Identity(M.rows(), M.cols())).cwiseAbs().maxCoeff() == 0.0;
+  return (M - alpha * Eigen::MatrixXd::Identity(M.rows(), M.cols())).cwiseAbs().maxCoeff() == 0.0;
 }
 
 void LmiProblem::push_term(int var, int r, int c, double w, const Eigen::MatrixXd& L,
