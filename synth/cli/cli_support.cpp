@@ -50,11 +50,17 @@ void print_coefficient_ranges(const synth::Plant& p, std::FILE* out) {
   }
 }
 
-void print_iteration(const synth::IterationReport& r) {
-  if (r.phase == 1 && r.centering == 0)
+void IterationTable::operator()(const synth::IterationReport& r) {
+  using synth::SolveStage;
+  if (!started_ || r.stage != stage_) {
+    if (r.stage == SolveStage::Backoff)
+      std::fprintf(stderr, "==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====\n");
     std::fprintf(stderr, "phase  step  %10s  %16s  %10s  newton  %9s  time[s]\n", "t", "objective", "gap", "lambda^2");
+    started_ = true;
+    stage_ = r.stage;
+  }
   if (r.phase == 2 && r.centering == 0)
-    std::fprintf(stderr, "---- phase 2: minimise gamma^2 ----\n");
+    std::fprintf(stderr, "---- phase 2: minimise %s ----\n", r.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
   std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
                r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
 }

@@ -17,6 +17,14 @@ std::string num(double v);
 // Coefficient ranges of the plant matrices (USER-PAIN #5), for --verbose.
 void print_coefficient_ranges(const synth::Plant& plant, std::FILE* out);
 // SDP-solver-style iteration table on stderr.
-void print_iteration(const synth::IterationReport& r);
+// The --verbose iteration table on stderr (a header whenever a new SDP starts).
+class IterationTable {
+ public:
+  void operator()(const synth::IterationReport& r);
+
+ private:
+  bool started_ = false;
+  synth::SolveStage stage_ = synth::SolveStage::Synthesis;
+};
 
 }  // namespace hinf::cli

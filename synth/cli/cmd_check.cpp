@@ -45,9 +45,10 @@ void add_check(CLI::App& app, Action& action) {
             synth::certify_filter(cfg.plant, gf, *g.gamma * (1 + equal_tol), cfg.settings);
         same_filter = c.passed;
         why = "        the golden filter on this config: nominal Hinf norm " + num(c.hinf_norm_nominal) +
-              ", robust bound " + num(c.robust_bound) +
-              (same_filter ? " <= golden gamma: an equally optimal filter (the optimum is not unique)\n"
-                           : " > golden gamma\n");
+              ", robust analysis LMI " +
+              (c.robust_feasible_at_gamma ? "feasible" : "infeasible (best scaled norm " + num(c.robust_scaled_norm) + ")") +
+              " at the golden gamma" +
+              (same_filter ? ": an equally optimal filter (the optimum is not unique)\n" : "\n");
       }
       std::cout << "gamma:  golden " << num(*g.gamma) << ", now " << num(r.gamma) << ", relative change "
                 << num(dg) << (same_gamma ? "  ok" : "  CHANGED") << "\n"

@@ -21,7 +21,7 @@ void add_solve(CLI::App& app, Action& action) {
       const bool v = *verbose || cfg.settings.verbose;
       if (v) print_coefficient_ranges(cfg.plant, stderr);
       const synth::SynthesisResult r =
-          v ? synth::synthesize(cfg.plant, cfg.settings, print_iteration)
+          v ? synth::synthesize(cfg.plant, cfg.settings, IterationTable())
             : synth::synthesize(cfg.plant, cfg.settings);
       if (v)
         std::fprintf(stderr, "LMI order %d, %d variables, H/E balance s = %.6g (H <- sH, E <- E/s)\n",

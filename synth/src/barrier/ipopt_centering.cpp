@@ -81,24 +81,31 @@ class CenteringTnlp : public Ipopt::TNLP {
       return false;
     }
     double l2 = 0;
-    if (barrier_.newton_decrement2(last_grad_z_, l2)) {
+    if (!barrier_.newton_decrement2(last_grad_z_, l2)) {
+      ++indefinite_;
+    } else {
       lambda2_ = l2;
-      if (0.5 * l2 <= opt_.lambda2_tol) {
+      if (l2 <= opt_.lambda2_tol) {
         centred_ = true;
         return false;
       }
-      // Late on the path round-off sets a floor under λ²: once it stops falling and is
-      // inside the quadratic region (λ ≤ 0.3, where f − f*(t) ≤ λ²), accept the point
-      // and let the caller add λ²/t to the gap bound.
+      // Late on the path round-off sets a floor under λ²: once it stops falling, accept
+      // the current point if it is well inside the quadratic region (λ² ≤ lambda2_accept);
+      // the caller's gap bound accounts for λ (path_following.cpp).
       if (l2 < 0.5 * best_lambda2_) {
         best_lambda2_ = l2;
         best_iter_ = iter;
-      } else if (iter - best_iter_ >= opt_.stall_iterations && best_lambda2_ <= 0.09) {
+      } else if (iter - best_iter_ >= opt_.stall_iterations && l2 <= opt_.lambda2_accept) {
         centred_ = true;
         noise_limited_ = true;
         return false;
       }
     }
+    // Newton has lost to round-off when λ² has not halved for give_up_iterations while
+    // near the centre, or while the Hessian keeps turning numerically indefinite
+    // (gᵀH⁻¹g < 0): stop, and let the caller retry with a shorter step in t or fall
+    // back to its last centred point.
+    if (iter - best_iter_ >= opt_.give_up_iterations && (best_lambda2_ < 1.0 || indefinite_ >= 2)) return false;
     return true;
   }
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
@@ -119,6 +126,7 @@ class CenteringTnlp : public Ipopt::TNLP {
   bool centred_ = false, stopped_early_ = false, noise_limited_ = false;
   double best_lambda2_ = std::numeric_limits<double>::infinity();
   int best_iter_ = 0;
+  int indefinite_ = 0;  // iterations where λ² could not be computed
   Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
 };
 
@@ -143,6 +151,11 @@ IpoptCentering::IpoptCentering() : impl_(new Impl) {
   // The Newton matrix is dense: MUMPS's default 1000 % workspace over-allocation
   // (zeroed at every factorisation) costs more than the factorisation itself.
   o.SetIntegerValue("mumps_mem_percent", 10);
+  // The matrix is the barrier Hessian (positive definite): no MUMPS scaling. Measured:
+  // scaling costs time at every factorisation and, late on the path, more Newton
+  // iterations (random n = 10: 127 with, 87 without; docs/benchmarks.md).
+  o.SetIntegerValue("mumps_permuting_scaling", 0);
+  o.SetIntegerValue("mumps_scaling", 0);
   impl_->app->Initialize("");  // never read an ipopt.opt from the working directory
 }
 
@@ -173,7 +186,9 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   CenteringResult r;
   r.z = tnlp->z_.size() == z0.size() ? tnlp->z_ : z0;
   r.iterations = tnlp->iterations_;
-  r.lambda2 = tnlp->lambda2_;
+  // λ² at the returned point itself (the gap bound of the caller depends on it)
+  double l2 = std::numeric_limits<double>::infinity();
+  r.lambda2 = barrier.newton_decrement2(r.z, l2) ? l2 : std::numeric_limits<double>::infinity();
   r.centred = tnlp->centred_;
   r.stopped_early = tnlp->stopped_early_;
   r.noise_limited = tnlp->noise_limited_;

@@ -13,18 +13,20 @@ namespace hinf::barrier {
 struct CenteringResult {
   Eigen::VectorXd z;
   int iterations = 0;
-  double lambda2 = 0;  // Newton decrement² at z
+  double lambda2 = 0;  // Newton decrement² at z (+inf if it could not be computed)
   bool centred = false;
   bool stopped_early = false;  // early-exit predicate met (phase I found s < 0)
-  bool noise_limited = false;  // accepted with λ² at its round-off floor (≤ 0.09)
+  bool noise_limited = false;  // accepted with λ² at its round-off floor (≤ lambda2_accept)
   std::string ipopt_status;
 };
 
 struct CenteringOptions {
-  double lambda2_tol = 1e-3;      // stop when λ²/2 ≤ this (λ ≈ 0.045: gap bound intact)
+  double lambda2_tol = 2e-3;      // centred when λ² ≤ this (λ ≈ 0.045)
+  double lambda2_accept = 0.0625; // ... or when λ² has stalled at or below this (λ ≤ 0.25)
   int max_iterations = 60;
   double max_cpu_time = 600;
   int stall_iterations = 4;       // λ² not halved for this many iterations: stalled
+  int give_up_iterations = 8;     // ... for this many near the centre: the centring failed
   bool phase1_stop_negative = false;  // phase I: stop as soon as s < 0 at an iterate
   bool derivative_test = false;   // run Ipopt's second-order derivative test (tests only)
 };

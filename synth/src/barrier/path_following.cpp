@@ -83,10 +83,14 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       ++sol.centerings;
       z = r.z;
       const double obj = phase == 1 ? z(n) : b.linear_objective(z);
-      // gap bound (N+1)/t, plus λ²/t when centring stopped at the round-off floor
-      const double gap = (nu + (r.noise_limited ? r.lambda2 : 0.0)) / t;
+      // Gap bound at a point with Newton decrement λ < 1 (ν-self-concordant barrier):
+      //   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
+      // from cᵀx*(t) − c* ≤ ν/t, ‖x − x*(t)‖ₓ ≤ λ/(1 − λ) and t‖c‖*ₓ ≤ λ + √ν
+      // (Nesterov, Introductory Lectures on Convex Optimization, Thm 4.1.13 and §4.2).
+      const double lam = std::sqrt(r.lambda2);
+      const double gap = lam < 1 ? (nu + (lam + std::sqrt(nu)) * lam / (1 - lam)) / t : INFINITY;
       if (observer)
-        observer({phase, k, t, obj, gap, r.iterations, r.lambda2, seconds_since(start)});
+        observer({synth::SolveStage::Synthesis, phase, k, t, obj, gap, r.iterations, r.lambda2, seconds_since(start)});
       if (phase == 1 && (r.stopped_early || obj < 0)) {
         ok = true;
         return z;
@@ -133,13 +137,17 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       last_gap = gap;
       last_t = t;
       have_centred = true;
-      if (phase == 2 && gap <= settings.relative_gap_tol * std::max(std::abs(obj), 1e-12)) {
+      const double gap_goal = settings.relative_gap_tol * std::max(std::abs(obj), 1e-12);
+      if (phase == 2 && gap <= gap_goal) {
         ok = true;
         return z;
       }
       if (out_of_budget(sol)) return z;
+      // Next t: μ·t, but no further than the tolerance needs (with a 1.5 safety factor) —
+      // overshooting only makes the last centring harder (its Hessian's condition grows like t²).
+      const double t_new =
+          phase == 2 ? std::min(growth * t, std::max(2.0 * t, 1.5 * t * gap / gap_goal)) : growth * t;
       // predictor along the central path: z + (t_new − t)·dz/dt, kept inside the domain
-      const double t_new = growth * t;
       if (b.path_tangent(z, dz)) {
         double alpha = 1.0;
         Eigen::VectorXd step = (t_new - t) * dz;

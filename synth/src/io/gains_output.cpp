@@ -75,7 +75,8 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   kv(out, "hinf_norm_ok", c.hinf_norm_ok);
   kv(out, "robust_bound", c.robust_bound);
   kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
-  kv(out, "robust_lmi_max_eigenvalue_relative", c.robust_lmi_max_eig_relative);
+  kv(out, "robust_multiplier", c.robust_multiplier);
+  kv(out, "robust_scaled_norm", c.robust_scaled_norm);
   kv(out, "cond_S", c.cond_S);
   kv(out, "cond_R_minus_S", c.cond_R_minus_S);
   kv(out, "norm_A_F", c.norm_A_F);

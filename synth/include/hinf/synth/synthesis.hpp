@@ -27,10 +27,15 @@ struct Certificate {
   double hinf_norm_nominal = 0;
   double hinf_norm_peak_frequency = 0;    // rad/sample
   bool hinf_norm_ok = false;
-  // check 4: robust analysis LMI (Lemma 1 + S-procedure) for the fixed filter
-  double robust_bound = 0;                // γ from minimising the analysis LMI
-  bool robust_feasible_at_gamma = false;  // analysis LMI verified negative definite at γ
-  double robust_lmi_max_eig_relative = 0;
+  // check 4: robust analysis LMI (Lemma 1 + S-procedure) for the fixed filter, decided by
+  // the bounded-real lemma: feasible at γ iff ‖[C̄; √λĒ](zI − Ā)⁻¹[B̄/γ, H̄/√λ]‖∞ < 1
+  // for some multiplier λ > 0
+  bool robust_feasible_at_gamma = false;
+  double robust_multiplier = 0;           // λ found (user's H, E units; 0 without uncertainty)
+  double robust_scaled_norm = 0;          // certified ‖·‖∞ at that λ (< 1 iff feasible)
+  // the smallest γ at which the analysis LMI is feasible with that λ (≤ γ; +inf if
+  // infeasible at γ) — an upper bound on the robust ℓ₂ gain. `analyze` minimises over λ too.
+  double robust_bound = 0;
   // conditioning of the recovery (USER-PAIN #6)
   double cond_S = 0, cond_R_minus_S = 0;
   double norm_A_F = 0, norm_B_F = 0, norm_C_F = 0;
@@ -66,7 +71,12 @@ struct SynthesisResult {
 SynthesisResult synthesize(const Plant& plant, const Settings& settings);
 
 // Progress of the interior-point solver, for an iteration table (`--verbose`).
+// Which SDP an iteration belongs to: Theorem 1 itself, or the optional γ back-off
+// (largest LMI margin at (1+b)γ*).
+enum class SolveStage { Synthesis, Backoff };
+
 struct IterationReport {
+  SolveStage stage = SolveStage::Synthesis;
   int phase = 2;           // 1: finding a strictly feasible point, 2: minimising γ²
   int centering = 0;       // outer (barrier-parameter) step
   double t = 0;            // barrier parameter

@@ -1,0 +1,46 @@
+// SPEC §2 check 4 without an SDP solver: the robust analysis LMI of Lemma 1 (eq. 17)
+// with the S-procedure, for a fixed filter, decided by the bounded-real lemma.
+//
+// With Ā, B̄, C̄ the nominal error system (SPEC eqs. 13–15), H̄ = [H; 0], Ē = [E, 0] and
+// multiplier λ > 0, the analysis LMI
+//     [ −P  PĀ            PB̄    0    PH̄  ]
+//     [  ∗  −P + λĒᵀĒ      0    C̄ᵀ   0   ]
+//     [  ∗   ∗           −γ²I   0    0   ]  < 0
+//     [  ∗   ∗             ∗   −I    0   ]
+//     [  ∗   ∗             ∗    ∗  −λI   ]
+// is, after Schur complements on the −I and −P blocks and the congruence
+// diag(I, I, I/γ, I/√λ), the discrete bounded-real inequality for
+//     G_λ(z) = [C̄; √λ Ē] (zI − Ā)⁻¹ [B̄/γ, H̄/√λ],
+// so (strict bounded-real lemma) it is feasible in P for this λ iff Ā is Schur stable
+// and ‖G_λ‖∞ < 1. G_λ = D G₁ D⁻¹ with D = diag(I, √λ I) on the uncertainty channel,
+// so log σ_max(G_λ(e^{jθ})) is convex in log λ for every θ (Sezginer & Overton 1990)
+// and ‖G_λ‖∞ is unimodal in log λ: a golden-section search over log λ finds the best
+// multiplier. Each ‖G_λ‖∞ comes from the symplectic-pencil algorithm (hinf_norm.hpp),
+// whose certified upper value is what is compared with 1.
+#pragma once
+#include "hinf/synth/plant.hpp"
+
+namespace hinf::certify {
+
+struct ScaledBoundedRealTest {
+  bool feasible = false;     // certified: ‖G_λ‖∞ < 1 at lambda (analysis LMI feasible at γ)
+  double lambda = 0;         // S-procedure multiplier (in the user's H, E units)
+  double scaled_norm = 0;    // certified upper value of ‖G_λ‖∞ at lambda (< 1 iff feasible)
+  int norm_evaluations = 0;  // H∞ norms computed
+};
+
+// stop_when_feasible: return at the first multiplier that certifies feasibility
+// (enough for the check); false: minimise ‖G_λ‖∞ over λ (to show how far from
+// feasible γ is). The nominal error system must be Schur stable (check 2) — throws
+// Error(Infeasible) otherwise. A plant without uncertainty has no multiplier: the
+// test is ‖C̄(zI − Ā)⁻¹B̄‖∞ < γ.
+ScaledBoundedRealTest scaled_bounded_real(const synth::Plant& plant, const synth::Filter& filter, double gamma,
+                                          bool stop_when_feasible = true);
+
+// The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the fixed
+// multiplier lambda, searched in (‖C̄(zI − Ā)⁻¹B̄‖∞, gamma_hi], where gamma_hi must pass.
+// Every γ it returns is certified: the analysis LMI is feasible there.
+double robust_gamma_at_multiplier(const synth::Plant& plant, const synth::Filter& filter, double lambda,
+                                  double gamma_hi, double rel_tol = 1e-9);
+
+}  // namespace hinf::certify
