@@ -29,4 +29,17 @@ TEST(GammaBackoff, PaperPlantCertifiedAtBackedOffGammaAndBetterConditioned) {
   EXPECT_LT(bo.certificate.cond_R_minus_S, opt.certificate.cond_R_minus_S);
 }
 
+// A problem whose largest margin is tiny (~3e-6): the back-off solve must not ask for a
+// relative accuracy on the margin that round-off cannot give (it used to fail, exit 4).
+TEST(GammaBackoff, TinyMarginProblemStillSolves) {
+  const auto cfg =
+      hinf::synth::load_config(std::string(HINF_SOURCE_DIR) + "/configs/paper-no-control-discounted.yaml");
+  hinf::synth::Settings s = cfg.settings;
+  s.gamma_backoff = 0.01;
+  const auto bo = hinf::synth::synthesize(cfg.plant, s);
+  EXPECT_TRUE(bo.certificate.passed);
+  EXPECT_NEAR(bo.gamma, 1.01 * bo.solver.optimal_gamma, 1e-9 * bo.gamma);
+  EXPECT_LE(bo.certificate.robust_bound, bo.gamma);
+}
+
 }  // namespace
