@@ -11,6 +11,7 @@
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/riccati_filter.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "random_plants.hpp"
 
 namespace {
 
@@ -18,20 +19,14 @@ using Eigen::MatrixXd;
 using hinf::synth::Plant;
 
 Plant random_nominal_plant(std::mt19937& g, int n, int p, int m, int q, int l, double rho) {
-  std::normal_distribution<double> N(0, 1);
-  auto rnd = [&](int r, int c) {
-    MatrixXd M(r, c);
-    for (int j = 0; j < c; ++j)
-      for (int i = 0; i < r; ++i) M(i, j) = N(g);
-    return M;
-  };
+  using hinf::test::random_matrix;
   Plant P;
-  P.A = rnd(n, n);
+  P.A = random_matrix(g, n, n);
   P.A *= rho / P.A.operatorNorm();
-  P.B = rnd(n, p);
-  P.C = rnd(m, n);
-  P.D = rnd(m, q);  // q ≥ m: D D^T > 0 almost surely (the Riccati form needs R > 0)
-  P.L = rnd(l, n);
+  P.B = random_matrix(g, n, p);
+  P.C = random_matrix(g, m, n);
+  P.D = random_matrix(g, m, q);  // q ≥ m: D D^T > 0 almost surely (the Riccati form needs R > 0)
+  P.L = random_matrix(g, l, n);
   P.H = MatrixXd(n, 0);
   P.E = MatrixXd(0, n);
   return P;

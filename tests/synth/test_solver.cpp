@@ -12,6 +12,7 @@
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/status.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "random_plants.hpp"
 
 namespace {
 
@@ -24,24 +25,18 @@ Plant example_plant() {
 }
 
 Plant random_uncertain_plant(unsigned seed, int n) {
+  using hinf::test::random_matrix;
   std::mt19937 g(seed);
-  std::normal_distribution<double> N(0, 1);
-  auto rnd = [&](int r, int c) {
-    MatrixXd M(r, c);
-    for (int j = 0; j < c; ++j)
-      for (int i = 0; i < r; ++i) M(i, j) = N(g);
-    return M;
-  };
   Plant P;
-  P.A = rnd(n, n);
+  P.A = random_matrix(g, n, n);
   P.A *= 0.7 / P.A.operatorNorm();
-  P.B = rnd(n, 2);
-  P.C = rnd(2, n);
-  P.D = 0.2 * rnd(2, 2);
-  P.L = rnd(2, n);
-  P.H = rnd(n, 2);
+  P.B = random_matrix(g, n, 2);
+  P.C = random_matrix(g, 2, n);
+  P.D = 0.2 * random_matrix(g, 2, 2);
+  P.L = random_matrix(g, 2, n);
+  P.H = random_matrix(g, n, 2);
   P.H *= 0.5 / P.H.operatorNorm();
-  P.E = rnd(1, n);
+  P.E = random_matrix(g, 1, n);
   P.E *= 0.4 / P.E.operatorNorm();  // ‖A‖ + ‖H‖‖E‖ = 0.9 < 1
   return P;
 }

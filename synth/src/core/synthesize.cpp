@@ -137,7 +137,8 @@ Certificate certify(const Plant& plant, const Filter& filter, double gamma, cons
   c.robust_feasible_at_gamma = br.feasible;
   c.robust_multiplier = br.lambda;
   c.robust_scaled_norm = br.scaled_norm;
-  c.robust_bound = br.feasible ? certify::robust_gamma_at_multiplier(plant, filter, br.lambda, gamma) : INFINITY;
+  // (to 1e-7 relative, rounded up: it is reported, not used)
+  c.robust_bound = br.feasible ? certify::robust_gamma_at_multiplier(plant, filter, br.lambda, gamma, 1e-7) : INFINITY;
   c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
   return c;
 }
