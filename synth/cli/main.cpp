@@ -1,7 +1,11 @@
 // hinf-synth: robust H∞ filter synthesis, certification, analysis and code generation.
+#include <algorithm>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
+#include "config/did_you_mean.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/synth/status.hpp"
 
@@ -19,6 +23,20 @@ int main(int argc, char** argv) {
   hinf::cli::add_verify(app, action);
   hinf::cli::add_check(app, action);
   hinf::cli::add_codegen(app, action);
+  // A mistyped subcommand would otherwise only get CLI11's "A subcommand is required".
+  if (argc >= 2 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    const std::string word = argv[1];
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      std::cerr << "hinf-synth: error: unknown subcommand '" << word << "'";
+      if (const auto guess = hinf::synth::closest_match(word, names)) std::cerr << " (did you mean '" << *guess << "'?)";
+      std::cerr << "; subcommands:";
+      for (const std::string& n : names) std::cerr << " " << n;
+      std::cerr << " (hinf-synth --help)\n";
+      return hinf::synth::exit_code(ErrorCode::InvalidInput);
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
