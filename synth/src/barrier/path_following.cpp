@@ -86,7 +86,8 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       // Gap bound at a point with Newton decrement λ < 1 (ν-self-concordant barrier):
       //   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
       // from cᵀx*(t) − c* ≤ ν/t, ‖x − x*(t)‖ₓ ≤ λ/(1 − λ) and t‖c‖*ₓ ≤ λ + √ν
-      // (Nesterov, Introductory Lectures on Convex Optimization, Thm 4.1.13 and §4.2).
+      // (Nesterov, Introductory Lectures on Convex Optimization, 2004, ch. 4: the local-norm
+      // distance to the minimiser of a self-concordant function, and ‖∇F‖*ₓ ≤ √ν).
       const double lam = std::sqrt(r.lambda2);
       const double gap = lam < 1 ? (nu + (lam + std::sqrt(nu)) * lam / (1 - lam)) / t : INFINITY;
       if (observer)
