@@ -64,38 +64,6 @@ MatrixXd theorem1_matrix(const synth::Plant& P, const Theorem1Point& x) {
   return M.matrix();
 }
 
-MatrixXd analysis_matrix(const synth::Plant& P, const synth::Filter& F, const MatrixXd& Pm,
-                         double lambda, double g) {
-  const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
-  const bool unc = P.uncertain();
-  MatrixXd A0 = MatrixXd::Zero(2 * n, 2 * n);  // SPEC eqs. (13)–(15)
-  A0 << P.A, MatrixXd::Zero(n, n), F.B_F * P.C, F.A_F;
-  MatrixXd Bb = MatrixXd::Zero(2 * n, p + q);
-  Bb.topLeftCorner(n, p) = P.B;
-  Bb.bottomRightCorner(n, q) = F.B_F * P.D;
-  MatrixXd Cb(l, 2 * n);
-  Cb << P.L, -F.C_F;
-  std::vector<int> sizes{2 * n, 2 * n, p + q, l};
-  if (unc) sizes.push_back(P.j());
-  BlockMatrix M(sizes);
-  M.set(0, 0, -Pm);
-  M.set(0, 1, Pm * A0);
-  M.set(0, 2, Pm * Bb);
-  MatrixXd Eb = MatrixXd::Zero(unc ? P.k() : 0, 2 * n);
-  if (unc) Eb.leftCols(n) = P.E;
-  M.set(1, 1, -Pm + (unc ? MatrixXd(lambda * Eb.transpose() * Eb) : MatrixXd::Zero(2 * n, 2 * n)));
-  M.set(1, 3, Cb.transpose());
-  M.set(2, 2, -g * MatrixXd::Identity(p + q, p + q));
-  M.set(3, 3, -MatrixXd::Identity(l, l));
-  if (unc) {
-    MatrixXd Hb = MatrixXd::Zero(2 * n, P.j());
-    Hb.topRows(n) = P.H;
-    M.set(0, 4, Pm * Hb);
-    M.set(4, 4, -lambda * MatrixXd::Identity(P.j(), P.j()));
-  }
-  return M.matrix();
-}
-
 DefinitenessCheck check_negative_definite(const MatrixXd& M, double margin) {
   DefinitenessCheck c;
   const Eigen::VectorXd ev =

@@ -1,4 +1,4 @@
-// Dense, direct assemblies of the two LMIs of SPEC §2 in the user's units, written
+// Dense, direct assembly of LMI (20) of SPEC §2 in the user's units, written
 // independently of the generic LMI layer the solver uses, so that the certificate
 // does not trust the solver's own data structures (SPEC §2: independent checks).
 #pragma once
@@ -16,11 +16,6 @@ struct Theorem1Point {
 
 // LMI (20) of SPEC §2 at a point (blocks n, n, n, n, p, q, l[, j]).
 Eigen::MatrixXd theorem1_matrix(const synth::Plant& plant, const Theorem1Point& x);
-
-// The robust analysis LMI (Lemma 1, eq. 17, with the S-procedure) for a fixed filter
-// at (P, λ, g) (blocks 2n, 2n, p+q, l[, j]).
-Eigen::MatrixXd analysis_matrix(const synth::Plant& plant, const synth::Filter& filter,
-                                const Eigen::MatrixXd& P, double lambda, double g);
 
 struct DefinitenessCheck {
   double max_eig = 0;           // largest eigenvalue of M

@@ -73,33 +73,19 @@ ErrorCode error_code_for(SolverStatus status) {
   return status == SolverStatus::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
 }
 
-struct AnalysisSolution {
-  double g = 0;
-  MatrixXd P;
-  double lambda = 0;
-  barrier::SdpSolution sdp;
-};
-
 // The robust analysis LMI (SPEC §2, eq. 17 with the S-procedure) for a fixed filter,
 // minimising γ² by the barrier method (`analyze`; the certificate uses the bounded-real
-// form of the same LMI instead, certify/scaled_bounded_real.hpp).
-AnalysisSolution solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
-  const double s = model::he_balance(plant);
-  model::AnalysisLmi A = model::build_analysis_lmi(plant, filter, s);
+// form of the same LMI instead, certify/scaled_bounded_real.hpp). Returns γ².
+double solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
+  model::AnalysisLmi A = model::build_analysis_lmi(plant, filter, model::he_balance(plant));
   VectorXd c = VectorXd::Zero(A.lmi.num_params());
   c(A.lmi.variable(A.g).offset) = 1.0;
-  AnalysisSolution out;
-  out.sdp = barrier::minimize_linear(A.lmi, c, settings);
-  if (out.sdp.status != SolverStatus::Solved) {
-    const ErrorCode code = error_code_for(out.sdp.status);
-    throw Error(code, "robust analysis LMI (SPEC §2 check 4): " +
-                          std::string(solver_status_message(out.sdp.status)) +
-                          (out.sdp.detail.empty() ? "" : ": " + out.sdp.detail));
-  }
-  out.g = out.sdp.objective;
-  out.P = A.lmi.value(A.P, out.sdp.x);
-  out.lambda = plant.uncertain() ? out.sdp.x(A.lmi.variable(A.lambda).offset) / (s * s) : 0.0;
-  return out;
+  const barrier::SdpSolution sdp = barrier::minimize_linear(A.lmi, c, settings);
+  if (sdp.status != SolverStatus::Solved)
+    throw Error(error_code_for(sdp.status), "robust analysis LMI (SPEC §2 check 4): " +
+                                                std::string(solver_status_message(sdp.status)) +
+                                                (sdp.detail.empty() ? "" : ": " + sdp.detail));
+  return sdp.objective;
 }
 
 }  // namespace
@@ -107,7 +93,7 @@ AnalysisSolution solve_analysis(const Plant& plant, const Filter& filter, const 
 double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings) {
   validate_plant(plant);
   settings.validate();
-  return std::sqrt(solve_analysis(plant, filter, settings).g);
+  return std::sqrt(solve_analysis(plant, filter, settings));
 }
 
 namespace {
