@@ -16,66 +16,52 @@ constexpr double kNormTolerance = 1e-10;
 constexpr double kLogLambdaHalfWidth = 35.0;
 constexpr int kGoldenSteps = 70;
 constexpr double kInvPhi = 0.6180339887498949;
-
-// ‖G_λ‖∞ of the scaled error system (certified upper value), λ = 0 for a certain plant.
-class ScaledSystem {
- public:
-  ScaledSystem(const synth::Plant& plant, const synth::Filter& filter)
-      : plant_(plant), e_(synth::error_system(plant, filter)) {
-    const int N = static_cast<int>(e_.A.rows());
-    const int j = plant.uncertain() ? plant.j() : 0, k = plant.uncertain() ? plant.k() : 0;
-    pq_ = static_cast<int>(e_.B.cols());
-    B_ = MatrixXd::Zero(N, pq_ + j);
-    C_ = MatrixXd::Zero(plant.l() + k, N);
-    D_ = MatrixXd::Zero(plant.l() + k, pq_ + j);
-    C_.topRows(plant.l()) = e_.C;
-  }
-  double norm(double gamma, double lambda) {
-    const int n = plant_.n();
-    B_.leftCols(pq_) = e_.B / gamma;
-    if (plant_.uncertain()) {
-      const double r = std::sqrt(lambda);
-      B_.block(0, pq_, n, plant_.j()) = plant_.H / r;
-      C_.block(plant_.l(), 0, plant_.k(), n) = r * plant_.E;
-    }
-    ++evaluations;
-    return synth::discrete_hinf_norm(e_.A, B_, C_, D_, kNormTolerance).norm;
-  }
-  double nominal_norm() { return synth::discrete_hinf_norm(e_.A, e_.B, e_.C, e_.D, kNormTolerance).norm; }
-  int evaluations = 0;
-
- private:
-  const synth::Plant& plant_;
-  synth::StateSpace e_;
-  int pq_ = 0;
-  MatrixXd B_, C_, D_;
-};
 }  // namespace
 
-double robust_gamma_at_multiplier(const synth::Plant& plant, const synth::Filter& filter, double lambda,
-                                  double gamma_hi, double rel_tol) {
-  ScaledSystem s(plant, filter);
-  double lo = s.nominal_norm(), hi = gamma_hi;
+ScaledBoundedReal::ScaledBoundedReal(const synth::Plant& plant, const synth::StateSpace& error_system)
+    : plant_(plant), e_(error_system) {
+  const int N = static_cast<int>(e_.A.rows());
+  const int j = plant.uncertain() ? plant.j() : 0, k = plant.uncertain() ? plant.k() : 0;
+  pq_ = static_cast<int>(e_.B.cols());
+  B_ = MatrixXd::Zero(N, pq_ + j);
+  C_ = MatrixXd::Zero(plant.l() + k, N);
+  D_ = MatrixXd::Zero(plant.l() + k, pq_ + j);
+  C_.topRows(plant.l()) = e_.C;
+}
+
+double ScaledBoundedReal::scaled_norm(double gamma, double lambda) {
+  const int n = plant_.n();
+  B_.leftCols(pq_) = e_.B / gamma;
+  if (plant_.uncertain()) {
+    const double r = std::sqrt(lambda);  // H̄/√λ and √λ Ē
+    B_.block(0, pq_, n, plant_.j()) = plant_.H / r;
+    C_.block(plant_.l(), 0, plant_.k(), n) = r * plant_.E;
+  }
+  ++evaluations_;
+  return synth::discrete_hinf_norm(e_.A, B_, C_, D_, kNormTolerance).norm;
+}
+
+double ScaledBoundedReal::gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol) {
+  double lo = gamma_lo, hi = gamma_hi;
   while (hi - lo > rel_tol * hi) {
     const double mid = 0.5 * (lo + hi);
-    (s.norm(mid, lambda) < 1.0 ? hi : lo) = mid;
+    (scaled_norm(mid, lambda) < 1.0 ? hi : lo) = mid;
   }
   return hi;
 }
 
-ScaledBoundedRealTest scaled_bounded_real(const synth::Plant& plant, const synth::Filter& filter, double gamma,
-                                          bool stop_when_feasible) {
-  ScaledSystem sys(plant, filter);
+ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
+  const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
-  if (!plant.uncertain()) {
-    out.scaled_norm = sys.norm(gamma, 0.0);
-    out.norm_evaluations = sys.evaluations;
+  if (!plant_.uncertain()) {
+    out.scaled_norm = scaled_norm(gamma, 0.0);
+    out.norm_evaluations = evaluations_ - evaluations_before;
     out.feasible = out.scaled_norm < 1.0;
     return out;
   }
-  auto norm_at = [&](double d) { return sys.norm(gamma, std::exp(d)); };
+  auto norm_at = [&](double d) { return scaled_norm(gamma, std::exp(d)); };
   // Centre of the bracket: λ balancing the uncertainty loop's two gains ‖H̄‖/√λ ~ √λ‖Ē‖/γ.
-  const double hn = plant.H.norm(), en = plant.E.norm();
+  const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
   double a = d0 - kLogLambdaHalfWidth, b = d0 + kLogLambdaHalfWidth;
   double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
@@ -99,11 +85,16 @@ ScaledBoundedRealTest scaled_bounded_real(const synth::Plant& plant, const synth
       if (f2 < best_f) best_f = f2, best_d = x2;
     }
   }
-  out.norm_evaluations = sys.evaluations;
+  out.norm_evaluations = evaluations_ - evaluations_before;
   out.lambda = std::exp(best_d);
   out.scaled_norm = best_f;
   out.feasible = best_f < 1.0;
   return out;
+}
+
+ScaledBoundedRealTest scaled_bounded_real(const synth::Plant& plant, const synth::Filter& filter, double gamma,
+                                          bool stop_when_feasible) {
+  return ScaledBoundedReal(plant, synth::error_system(plant, filter)).test(gamma, stop_when_feasible);
 }
 
 }  // namespace hinf::certify

@@ -18,7 +18,10 @@
 // multiplier. Each ‖G_λ‖∞ comes from the symplectic-pencil algorithm (hinf_norm.hpp),
 // whose certified upper value is what is compared with 1.
 #pragma once
+#include <Eigen/Dense>
+
 #include "hinf/synth/plant.hpp"
+#include "hinf/synth/state_space.hpp"
 
 namespace hinf::certify {
 
@@ -29,18 +32,41 @@ struct ScaledBoundedRealTest {
   int norm_evaluations = 0;  // H∞ norms computed
 };
 
-// stop_when_feasible: return at the first multiplier that certifies feasibility
-// (enough for the check); false: minimise ‖G_λ‖∞ over λ (to show how far from
-// feasible γ is). The nominal error system must be Schur stable (check 2) — throws
-// Error(Infeasible) otherwise. A plant without uncertainty has no multiplier: the
-// test is ‖C̄(zI − Ā)⁻¹B̄‖∞ < γ.
+// The test for one filter: holds the nominal error system (SPEC eqs. 13–15, which must
+// be Schur stable, check 2 — Error(Infeasible) otherwise) and the scaled system's
+// matrices, so that the many norms of a search share one set-up. Keeps a reference
+// to `plant`.
+class ScaledBoundedReal {
+ public:
+  ScaledBoundedReal(const synth::Plant& plant, const synth::StateSpace& error_system);
+
+  // Certified upper value of ‖G_λ‖∞ at (γ, λ); λ is ignored for a certain plant.
+  double scaled_norm(double gamma, double lambda);
+
+  // stop_when_feasible: return at the first multiplier that certifies feasibility
+  // (enough for the check); false: minimise ‖G_λ‖∞ over λ (to show how far from
+  // feasible γ is). A plant without uncertainty has no multiplier: the test is
+  // ‖C̄(zI − Ā)⁻¹B̄‖∞ < γ.
+  ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true);
+
+  // The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the
+  // fixed multiplier lambda, bisected in (gamma_lo, gamma_hi]: gamma_hi must pass;
+  // gamma_lo is the nominal norm ‖C̄(zI − Ā)⁻¹B̄‖∞ (check 3's value), below which no γ
+  // passes. Every γ it returns is certified: the analysis LMI is feasible there.
+  double gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol);
+
+  int evaluations() const { return evaluations_; }
+
+ private:
+  const synth::Plant& plant_;
+  synth::StateSpace e_;
+  int pq_ = 0;
+  Eigen::MatrixXd B_, C_, D_;
+  int evaluations_ = 0;
+};
+
+// One-shot form: ScaledBoundedReal(plant, error_system(plant, filter)).test(gamma, …).
 ScaledBoundedRealTest scaled_bounded_real(const synth::Plant& plant, const synth::Filter& filter, double gamma,
                                           bool stop_when_feasible = true);
-
-// The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the fixed
-// multiplier lambda, searched in (‖C̄(zI − Ā)⁻¹B̄‖∞, gamma_hi], where gamma_hi must pass.
-// Every γ it returns is certified: the analysis LMI is feasible there.
-double robust_gamma_at_multiplier(const synth::Plant& plant, const synth::Filter& filter, double lambda,
-                                  double gamma_hi, double rel_tol = 1e-9);
 
 }  // namespace hinf::certify

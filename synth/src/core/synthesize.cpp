@@ -105,7 +105,8 @@ Certificate certify(const Plant& plant, const Filter& filter, double gamma, cons
   c.norm_B_F = filter.B_F.norm();
   c.norm_C_F = filter.C_F.norm();
   // check 2: Schur stability, nominal and sampled admissible F
-  c.spectral_radius_nominal = spectral_radius(error_system(plant, filter).A);
+  const StateSpace es = error_system(plant, filter);  // nominal (F = 0)
+  c.spectral_radius_nominal = spectral_radius(es.A);
   const StabilitySample ss =
       sampled_robust_stability(plant, filter, settings.stability_samples, settings.seed);
   c.spectral_radius_sampled_max = ss.max_spectral_radius;
@@ -113,18 +114,19 @@ Certificate certify(const Plant& plant, const Filter& filter, double gamma, cons
   c.schur_stable = c.spectral_radius_nominal < 1 && ss.max_spectral_radius < 1;
   if (!c.schur_stable) return c;  // the norms below are undefined
   // check 3: nominal H∞ norm by the symplectic-pencil algorithm (no LMI, no grid)
-  const HinfNorm hn = discrete_hinf_norm(error_system(plant, filter), 1e-10);
+  const HinfNorm hn = discrete_hinf_norm(es, 1e-10);
   c.hinf_norm_nominal = hn.norm;
   c.hinf_norm_peak_frequency = hn.peak_frequency;
   c.hinf_norm_ok = hn.norm <= gamma;
   // check 4: the robust analysis LMI at γ, decided by the bounded-real lemma with the
   // best S-procedure multiplier (no SDP solver involved; certify/scaled_bounded_real.hpp)
-  const certify::ScaledBoundedRealTest br = certify::scaled_bounded_real(plant, filter, gamma);
+  certify::ScaledBoundedReal robust(plant, es);
+  const certify::ScaledBoundedRealTest br = robust.test(gamma);
   c.robust_feasible_at_gamma = br.feasible;
   c.robust_multiplier = br.lambda;
   c.robust_scaled_norm = br.scaled_norm;
   // (to 1e-7 relative, rounded up: it is reported, not used)
-  c.robust_bound = br.feasible ? certify::robust_gamma_at_multiplier(plant, filter, br.lambda, gamma, 1e-7) : INFINITY;
+  c.robust_bound = br.feasible ? robust.gamma_at_multiplier(br.lambda, hn.norm, gamma, 1e-7) : INFINITY;
   c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
   return c;
 }
