@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "barrier/ipopt_centering.hpp"
@@ -164,6 +165,20 @@ TEST(LmiLayer, ToyLmiEvaluateMatchesHandAssembly) {
     put(5, 9, C23);
     EXPECT_LT(rel_err(L.evaluate(x), M), 1e-13) << "trial " << trial;
   }
+}
+
+// cost_of(v): cᵀx is the scalar variable's value, for any x; refused for a matrix variable.
+TEST(LmiLayer, CostOfScalarVariable) {
+  std::mt19937 g(12);
+  LmiProblem L({2, 1});
+  const auto X = L.add_symmetric("X", 2);
+  const auto z = L.add_scalar("z");
+  const auto w = L.add_scalar("w");
+  const VectorXd x = rnd_vec(g, L.num_params());
+  EXPECT_DOUBLE_EQ(L.cost_of(z).dot(x), L.value(z, x)(0, 0));
+  EXPECT_DOUBLE_EQ(L.cost_of(w).dot(x), L.value(w, x)(0, 0));
+  EXPECT_EQ(L.cost_of(w).cwiseAbs().sum(), 1.0);
+  EXPECT_THROW(L.cost_of(X), std::invalid_argument);
 }
 
 TEST(LmiLayer, ToyLmiGradientHessianMatchDenseTraces) {
@@ -320,19 +335,24 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   check_barrier_fd(b, x, g, 1e-6);
 }
 
+// A phase-I point (x, s) of T: x = 0.3·N(0, 1) entries, s = max(0, λ_max(M(x))) + room, so
+// that −M(x) − εI + sI ≻ 0 with margin `room` (less ε).
+VectorXd phase1_point(const hinf::model::Theorem1Lmi& T, std::mt19937& g, double room) {
+  const int np = T.lmi.num_params();
+  VectorXd z(np + 1);
+  z.head(np) = 0.3 * rnd_vec(g, np);
+  const double lmax = T.lmi.evaluate(z.head(np)).selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
+  z(np) = std::max(0.0, lmax) + room;
+  return z;
+}
+
 TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase1) {
   std::mt19937 g(17);
   const Plant P = random_plant(g, 4, 1, 2, 2, 3, 2, 1);
   const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
-  const int np = T.lmi.num_params();
-  VectorXd c = VectorXd::Zero(np);
-  c(T.lmi.variable(T.g).offset) = 1.0;
-  hinf::barrier::LogDetBarrier b(T.lmi, c, 1e-9, 1e8, /*phase1=*/true);
+  hinf::barrier::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   b.set_t(2.0);
-  VectorXd z(np + 1);
-  z.head(np) = 0.3 * rnd_vec(g, np);
-  const double lmax = T.lmi.evaluate(z.head(np)).selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
-  z(np) = std::max(0.0, lmax) + 0.5;
+  const VectorXd z = phase1_point(T, g, 0.5);
   check_barrier_fd(b, z, g, 1e-6);
 }
 
@@ -362,20 +382,14 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
   std::mt19937 g(15);
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
-  const int np = T.lmi.num_params();
-  VectorXd c = VectorXd::Zero(np);
-  c(T.lmi.variable(T.g).offset) = 1.0;
-  hinf::barrier::LogDetBarrier b(T.lmi, c, 1e-9, 1e8, /*phase1=*/true);
+  hinf::barrier::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   // small t: Ipopt's forward differences (step 1e-7) lose u·|f|/1e-7 to round-off,
   // so |f| = |t·s − log det …| must stay small next to its tolerance 1e-5
   b.set_t(1e-3);
-  VectorXd z(np + 1);
-  z.head(np) = 0.3 * rnd_vec(g, np);
-  const double lmax = T.lmi.evaluate(z.head(np)).selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
   // Strictly inside (−M − εI + sI ≻ 0) with room to spare: Ipopt's derivative checker
   // evaluates at a random perturbation of z (option point_perturbation_radius, default 10),
   // which the centring adapter does not switch off.
-  z(np) = std::max(0.0, lmax) + 1e4;
+  const VectorXd z = phase1_point(T, g, 1e4);
   ASSERT_TRUE(b.inside(z));
   expect_checker_clean(run_derivative_checker(b, z));
 }
@@ -391,8 +405,7 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase2) {
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
   const int np = T.lmi.num_params();
-  VectorXd c = VectorXd::Zero(np);
-  c(T.lmi.variable(T.g).offset) = 1.0;
+  const VectorXd c = T.lmi.cost_of(T.g);
   hinf::synth::Settings st;
   st.relative_gap_tol = 10.0;  // stop at the first phase-II centring: well inside the cone
   const auto sol = hinf::barrier::minimize_linear(T.lmi, c, st);

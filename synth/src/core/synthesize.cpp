@@ -78,8 +78,7 @@ ErrorCode error_code_for(SolverStatus status) {
 // form of the same LMI instead, certify/scaled_bounded_real.hpp). Returns γ².
 double solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
   model::AnalysisLmi A = model::build_analysis_lmi(plant, filter, model::he_balance(plant));
-  VectorXd c = VectorXd::Zero(A.lmi.num_params());
-  c(A.lmi.variable(A.g).offset) = 1.0;
+  const VectorXd c = A.lmi.cost_of(A.g);
   const barrier::SdpSolution sdp = barrier::minimize_linear(A.lmi, c, settings);
   if (sdp.status != SolverStatus::Solved)
     throw Error(error_code_for(sdp.status), "robust analysis LMI (SPEC §2 check 4): " +
@@ -147,8 +146,7 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
 
   const double s = model::he_balance(plant);
   model::Theorem1Lmi T = model::build_theorem1(plant, s);
-  VectorXd c = VectorXd::Zero(T.lmi.num_params());
-  c(T.lmi.variable(T.g).offset) = 1.0;
+  const VectorXd c = T.lmi.cost_of(T.g);
   const barrier::SdpSolution sol = barrier::minimize_linear(T.lmi, c, settings, VectorXd(), observer);
 
   SynthesisResult res;
@@ -183,8 +181,7 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
   if (settings.gamma_backoff > 0) {
     g_point = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
     Tb = model::build_theorem1_backoff(plant, s, g_point);
-    VectorXd cb = VectorXd::Zero(Tb.lmi.num_params());
-    cb(Tb.lmi.variable(Tb.margin).offset) = 1.0;
+    const VectorXd cb = Tb.lmi.cost_of(Tb.margin);
     // The margin only has to be near its maximum (a well-centred point, not a digit
     // count): relative accuracy 1e-3. At the solver's 1e-7 a margin of ~1e-6 would ask
     // for an absolute gap of 1e-13, below round-off.
@@ -260,8 +257,7 @@ std::string theorem1_sdpa(const Plant& plant, const std::string& comment) {
   validate_plant(plant);
   const double s = model::he_balance(plant);
   model::Theorem1Lmi T = model::build_theorem1(plant, s);
-  VectorXd c = VectorXd::Zero(T.lmi.num_params());
-  c(T.lmi.variable(T.g).offset) = 1.0;
+  const VectorXd c = T.lmi.cost_of(T.g);
   return lmi::to_sdpa_sparse(T.lmi, c, comment + "\nvariable " + std::to_string(T.lmi.variable(T.g).offset + 1) +
                                            " is gamma^2; H/E balance s = " + std::to_string(s));
 }

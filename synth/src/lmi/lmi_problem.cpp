@@ -113,6 +113,15 @@ void LmiProblem::add_constant(int r, int c, const Eigen::MatrixXd& K) {
   if (r != c) M0_.block(block_offsets_[c], block_offsets_[r], K.cols(), K.rows()) += K.transpose();
 }
 
+Eigen::VectorXd LmiProblem::cost_of(VarId id) const {
+  const Variable& v = variables_.at(id.index);
+  if (v.shape != VarShape::Scalar)
+    throw std::invalid_argument("LmiProblem::cost_of: " + v.name + " is not a scalar variable");
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(num_params_);
+  c(v.offset) = 1.0;
+  return c;
+}
+
 Eigen::MatrixXd LmiProblem::value(VarId id, const Eigen::VectorXd& x) const {
   const Variable& v = variables_.at(id.index);
   Eigen::MatrixXd X(v.rows, v.cols);

@@ -63,6 +63,9 @@ class LmiProblem {
   const std::vector<Variable>& variables() const { return variables_; }
   const Variable& variable(VarId v) const { return variables_[v.index]; }
 
+  // The cost vector c with cᵀx = the value of the scalar variable v (minimise v).
+  Eigen::VectorXd cost_of(VarId v) const;
+
   // x ↔ matrix value of a variable.
   Eigen::MatrixXd value(VarId v, const Eigen::VectorXd& x) const;
   void set_value(VarId v, const Eigen::MatrixXd& X, Eigen::VectorXd& x) const;
