@@ -84,7 +84,6 @@ class CenteringTnlp : public Ipopt::TNLP {
     if (!barrier_.newton_decrement2(last_grad_z_, l2)) {
       ++indefinite_;
     } else {
-      lambda2_ = l2;
       if (l2 <= opt_.lambda2_tol) {
         centred_ = true;
         return false;
@@ -97,7 +96,6 @@ class CenteringTnlp : public Ipopt::TNLP {
         best_iter_ = iter;
       } else if (iter - best_iter_ >= opt_.stall_iterations && l2 <= opt_.lambda2_accept) {
         centred_ = true;
-        noise_limited_ = true;
         return false;
       }
     }
@@ -108,10 +106,9 @@ class CenteringTnlp : public Ipopt::TNLP {
     if (iter - best_iter_ >= opt_.give_up_iterations && (best_lambda2_ < 1.0 || indefinite_ >= 2)) return false;
     return true;
   }
-  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
-    status_ = status;
     z_ = Eigen::Map<const Eigen::VectorXd>(x, n);
   }
 
@@ -122,12 +119,10 @@ class CenteringTnlp : public Ipopt::TNLP {
   Eigen::VectorXd grad_, last_grad_z_, z_;
   Eigen::MatrixXd hess_;
   int iterations_ = 0;
-  double lambda2_ = std::numeric_limits<double>::infinity();
-  bool centred_ = false, stopped_early_ = false, noise_limited_ = false;
+  bool centred_ = false, stopped_early_ = false;
   double best_lambda2_ = std::numeric_limits<double>::infinity();
   int best_iter_ = 0;
   int indefinite_ = 0;  // iterations where λ² could not be computed
-  Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
 };
 
 }  // namespace
@@ -191,7 +186,6 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   r.lambda2 = barrier.newton_decrement2(r.z, l2) ? l2 : std::numeric_limits<double>::infinity();
   r.centred = tnlp->centred_;
   r.stopped_early = tnlp->stopped_early_;
-  r.noise_limited = tnlp->noise_limited_;
   switch (st) {
     case Ipopt::Solve_Succeeded: r.ipopt_status = "solve_succeeded"; break;
     case Ipopt::User_Requested_Stop: r.ipopt_status = "user_requested_stop"; break;

@@ -16,7 +16,6 @@ struct CenteringResult {
   double lambda2 = 0;  // Newton decrement² at z (+inf if it could not be computed)
   bool centred = false;
   bool stopped_early = false;  // early-exit predicate met (phase I found s < 0)
-  bool noise_limited = false;  // accepted with λ² at its round-off floor (≤ lambda2_accept)
   std::string ipopt_status;
 };
 
