@@ -154,7 +154,9 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       // predictor along the central path: z + (t_new − t)·dz/dt, kept inside the domain
       if (b.path_tangent(z, dz)) {
         double alpha = 1.0;
-        Eigen::VectorXd step = (t_new - t) * dz;
+        // x*(t) − x* = O(1/t) on the central path: extrapolate linearly in 1/t, i.e.
+        // Δx = (dx/d(1/t))·(1/t_new − 1/t) = t·(1 − t/t_new)·dx/dt.
+        Eigen::VectorXd step = (t * (1.0 - t / t_new)) * dz;
         for (int tries = 0; tries < 40; ++tries, alpha *= 0.5) {
           const Eigen::VectorXd zt = z + alpha * step;
           if (b.inside(zt)) {
