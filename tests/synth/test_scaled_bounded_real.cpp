@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "certify/scaled_bounded_real.hpp"
 #include "hinf/synth/config.hpp"
@@ -96,6 +97,83 @@ TEST(ScaledBoundedReal, InvariantUnderHeRebalancing) {
   EXPECT_NEAR(a.scaled_norm, b.scaled_norm, 1e-8);
   EXPECT_NEAR(std::log(b.lambda / a.lambda), std::log(s * s), 1e-3);
   EXPECT_FALSE(scaled_bounded_real(Q, F, g_lmi * (1 - kSide), false).feasible);
+}
+
+// gamma_at_multiplier (regula falsi, Illinois) against a plain bisection written here:
+// the same smallest certified γ to the tolerance, with fewer H∞ norms.
+TEST(ScaledBoundedReal, GammaAtMultiplierMatchesBisection) {
+  std::mt19937 g(4242);
+  for (int n = 1; n <= 5; ++n) {
+    SCOPED_TRACE(testing::Message() << "n = " << n);
+    const Plant P = hinf::test::random_uncertain_plant(g, n);
+    const Filter F = hinf::test::random_stable_filter(g, P);
+    const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
+    const double nominal = hinf::synth::discrete_hinf_norm(e, 1e-10).norm;
+    const double g_lmi = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
+    const double g_hi = 1.5 * g_lmi;  // passes at the best multiplier for g_lmi·(1 + 1e-5)
+    const double lambda = scaled_bounded_real(P, F, g_lmi * (1 + kSide), false).lambda;
+    ScaledBoundedReal sbr(P, e);
+    ASSERT_LT(sbr.scaled_norm(g_hi, lambda), 1.0);
+    const double tol = 1e-9;
+    ScaledBoundedReal fast(P, e);
+    const double g_fast = fast.gamma_at_multiplier(lambda, nominal, g_hi, tol);
+    double lo = nominal, hi = g_hi;
+    int bisections = 0;
+    while (hi - lo > tol * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (sbr.scaled_norm(mid, lambda) < 1.0 ? hi : lo) = mid;
+      ++bisections;
+    }
+    EXPECT_NEAR(g_fast, hi, 2 * tol * hi);
+    EXPECT_LT(sbr.scaled_norm(g_fast, lambda), 1.0);                   // certified
+    EXPECT_GE(sbr.scaled_norm(g_fast * (1 - 2 * tol), lambda), 1.0);   // and the smallest
+    EXPECT_LT(fast.evaluations(), bisections);
+  }
+}
+
+// A multiplier hint is only a witness: a good one ends the test after one norm, a bad
+// one is searched past, and none makes an infeasible γ pass.
+TEST(ScaledBoundedReal, HintIsAWitnessNotAnAnswer) {
+  std::mt19937 g(77);
+  const Plant P = hinf::test::random_uncertain_plant(g, 3);
+  const Filter F = hinf::test::random_stable_filter(g, P);
+  const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
+  const double g_lmi = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
+  const double lambda = scaled_bounded_real(P, F, g_lmi * (1 + kSide), false).lambda;
+
+  ScaledBoundedReal good(P, e);
+  const auto a = good.test(g_lmi * (1 + kSide), true, lambda);
+  EXPECT_TRUE(a.feasible);
+  EXPECT_EQ(a.norm_evaluations, 1);
+  EXPECT_EQ(a.lambda, lambda);
+
+  ScaledBoundedReal bad(P, e);
+  const auto b = bad.test(g_lmi * (1 + kSide), true, lambda * 1e-12);
+  EXPECT_TRUE(b.feasible);
+  EXPECT_GT(b.norm_evaluations, 1);
+  EXPECT_LT(ScaledBoundedReal(P, e).scaled_norm(g_lmi * (1 + kSide), b.lambda), 1.0);
+
+  for (double hint : {lambda, lambda * 1e-12, lambda * 1e12}) {
+    ScaledBoundedReal below(P, e);
+    EXPECT_FALSE(below.test(g_lmi * (1 - kSide), true, hint).feasible) << "hint " << hint;
+  }
+}
+
+// The synthesised filter's certificate names a multiplier; recomputed independently it
+// must certify the written γ.
+TEST(ScaledBoundedReal, SynthesisCertificateMultiplierRecomputes) {
+  for (const char* name : {"paper-dbar0.05.yaml", "paper-dbar1.yaml"}) {
+    SCOPED_TRACE(name);
+    const auto cfg = hinf::synth::load_config(std::string(HINF_SOURCE_DIR "/configs/") + name);
+    const auto res = hinf::synth::synthesize(cfg.plant, cfg.settings);
+    const hinf::synth::StateSpace e = hinf::synth::error_system(cfg.plant, res.filter);
+    ScaledBoundedReal sbr(cfg.plant, e);
+    const double v = sbr.scaled_norm(res.gamma, res.certificate.robust_multiplier);
+    EXPECT_LT(v, 1.0);
+    EXPECT_NEAR(v, res.certificate.robust_scaled_norm, 1e-9);
+    EXPECT_LE(res.certificate.robust_bound, res.gamma);
+    EXPECT_LT(sbr.scaled_norm(res.certificate.robust_bound, res.certificate.robust_multiplier), 1.0);
+  }
 }
 
 }  // namespace

@@ -42,15 +42,43 @@ double ScaledBoundedReal::scaled_norm(double gamma, double lambda) {
 }
 
 double ScaledBoundedReal::gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol) {
+  // Root of f(γ) = ‖G_λ‖∞(γ) − 1 (decreasing in γ) by regula falsi with the Illinois
+  // modification — superlinear where bisection needs log₂ of the bracket ratio — on a
+  // bracket [lo, hi] with f(lo) ≥ 0 > f(hi) kept throughout, so the returned hi is
+  // certified. Trial points stay ≥ rel_tol/2 inside the bracket (so a trial next to
+  // the root closes it), and a bisection is taken whenever three steps have not halved
+  // the bracket (so it always shrinks).
   double lo = gamma_lo, hi = gamma_hi;
-  while (hi - lo > rel_tol * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (scaled_norm(mid, lambda) < 1.0 ? hi : lo) = mid;
+  double flo = scaled_norm(lo, lambda) - 1.0;
+  if (flo < 0) return lo;
+  double fhi = scaled_norm(hi, lambda) - 1.0;
+  if (!(fhi < 0)) return hi;  // the caller's contract: gamma_hi passes
+  int side = 0;
+  double width_before[3] = {INFINITY, INFINITY, INFINITY};
+  for (int it = 0; hi - lo > rel_tol * hi; ++it) {
+    const double pad = 0.5 * rel_tol * hi;
+    const bool slow = hi - lo > 0.5 * width_before[it % 3];
+    width_before[it % 3] = hi - lo;
+    double m = slow ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
+    if (!std::isfinite(m)) m = 0.5 * (lo + hi);
+    m = std::min(std::max(m, lo + pad), hi - pad);
+    const double fm = scaled_norm(m, lambda) - 1.0;
+    if (fm < 0) {
+      hi = m;
+      fhi = fm;
+      if (side == -1) flo *= 0.5;
+      side = -1;
+    } else {
+      lo = m;
+      flo = fm;
+      if (side == 1) fhi *= 0.5;
+      side = 1;
+    }
   }
   return hi;
 }
 
-ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
+ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible, double lambda_hint) {
   const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
   if (!plant_.uncertain()) {
@@ -60,6 +88,17 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
     return out;
   }
   auto norm_at = [&](double d) { return scaled_norm(gamma, std::exp(d)); };
+  double hint_f = INFINITY;
+  if (lambda_hint > 0 && std::isfinite(lambda_hint)) {
+    hint_f = scaled_norm(gamma, lambda_hint);
+    if (stop_when_feasible && hint_f < 1.0) {
+      out.norm_evaluations = evaluations_ - evaluations_before;
+      out.lambda = lambda_hint;
+      out.scaled_norm = hint_f;
+      out.feasible = true;
+      return out;
+    }
+  }
   // Centre of the bracket: λ balancing the uncertainty loop's two gains ‖H̄‖/√λ ~ √λ‖Ē‖/γ.
   const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
@@ -88,7 +127,11 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   out.norm_evaluations = evaluations_ - evaluations_before;
   out.lambda = std::exp(best_d);
   out.scaled_norm = best_f;
-  out.feasible = best_f < 1.0;
+  if (hint_f < best_f) {
+    out.lambda = lambda_hint;
+    out.scaled_norm = hint_f;
+  }
+  out.feasible = out.scaled_norm < 1.0;
   return out;
 }
 
