@@ -131,34 +131,6 @@ TEST(ScaledBoundedReal, GammaAtMultiplierMatchesBisection) {
   }
 }
 
-// A multiplier hint is only a witness: a good one ends the test after one norm, a bad
-// one is searched past, and none makes an infeasible γ pass.
-TEST(ScaledBoundedReal, HintIsAWitnessNotAnAnswer) {
-  std::mt19937 g(77);
-  const Plant P = hinf::test::random_uncertain_plant(g, 3);
-  const Filter F = hinf::test::random_stable_filter(g, P);
-  const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
-  const double g_lmi = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
-  const double lambda = scaled_bounded_real(P, F, g_lmi * (1 + kSide), false).lambda;
-
-  ScaledBoundedReal good(P, e);
-  const auto a = good.test(g_lmi * (1 + kSide), true, lambda);
-  EXPECT_TRUE(a.feasible);
-  EXPECT_EQ(a.norm_evaluations, 1);
-  EXPECT_EQ(a.lambda, lambda);
-
-  ScaledBoundedReal bad(P, e);
-  const auto b = bad.test(g_lmi * (1 + kSide), true, lambda * 1e-12);
-  EXPECT_TRUE(b.feasible);
-  EXPECT_GT(b.norm_evaluations, 1);
-  EXPECT_LT(ScaledBoundedReal(P, e).scaled_norm(g_lmi * (1 + kSide), b.lambda), 1.0);
-
-  for (double hint : {lambda, lambda * 1e-12, lambda * 1e12}) {
-    ScaledBoundedReal below(P, e);
-    EXPECT_FALSE(below.test(g_lmi * (1 - kSide), true, hint).feasible) << "hint " << hint;
-  }
-}
-
 // The synthesised filter's certificate names a multiplier; recomputed independently it
 // must certify the written γ.
 TEST(ScaledBoundedReal, SynthesisCertificateMultiplierRecomputes) {
@@ -171,6 +143,8 @@ TEST(ScaledBoundedReal, SynthesisCertificateMultiplierRecomputes) {
     const double v = sbr.scaled_norm(res.gamma, res.certificate.robust_multiplier);
     EXPECT_LT(v, 1.0);
     EXPECT_NEAR(v, res.certificate.robust_scaled_norm, 1e-9);
+    // the multiplier was found by the certificate's own search, not taken from the solver
+    EXPECT_LT(scaled_bounded_real(cfg.plant, res.filter, res.gamma, false).scaled_norm, 1.0);
     EXPECT_LE(res.certificate.robust_bound, res.gamma);
     EXPECT_LT(sbr.scaled_norm(res.certificate.robust_bound, res.certificate.robust_multiplier), 1.0);
   }

@@ -78,7 +78,7 @@ double ScaledBoundedReal::gamma_at_multiplier(double lambda, double gamma_lo, do
   return hi;
 }
 
-ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible, double lambda_hint) {
+ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
   const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
   if (!plant_.uncertain()) {
@@ -88,17 +88,6 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
     return out;
   }
   auto norm_at = [&](double d) { return scaled_norm(gamma, std::exp(d)); };
-  double hint_f = INFINITY;
-  if (lambda_hint > 0 && std::isfinite(lambda_hint)) {
-    hint_f = scaled_norm(gamma, lambda_hint);
-    if (stop_when_feasible && hint_f < 1.0) {
-      out.norm_evaluations = evaluations_ - evaluations_before;
-      out.lambda = lambda_hint;
-      out.scaled_norm = hint_f;
-      out.feasible = true;
-      return out;
-    }
-  }
   // Centre of the bracket: λ balancing the uncertainty loop's two gains ‖H̄‖/√λ ~ √λ‖Ē‖/γ.
   const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
@@ -127,10 +116,6 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   out.norm_evaluations = evaluations_ - evaluations_before;
   out.lambda = std::exp(best_d);
   out.scaled_norm = best_f;
-  if (hint_f < best_f) {
-    out.lambda = lambda_hint;
-    out.scaled_norm = hint_f;
-  }
   out.feasible = out.scaled_norm < 1.0;
   return out;
 }

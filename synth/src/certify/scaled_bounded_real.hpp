@@ -47,11 +47,7 @@ class ScaledBoundedReal {
   // (enough for the check); false: minimise ‖G_λ‖∞ over λ (to show how far from
   // feasible γ is). A plant without uncertainty has no multiplier: the test is
   // ‖C̄(zI − Ā)⁻¹B̄‖∞ < γ.
-  //
-  // lambda_hint > 0 (e.g. the synthesis LMI's own multiplier): tried first; with
-  // stop_when_feasible, a pass there ends the test after one norm. The result is
-  // certified whatever the hint — a multiplier is only a witness.
-  ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true, double lambda_hint = 0);
+  ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true);
 
   // The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the
   // fixed multiplier lambda, bisected in (gamma_lo, gamma_hi]: gamma_hi must pass;

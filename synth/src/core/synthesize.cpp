@@ -96,10 +96,8 @@ double robust_bound(const Plant& plant, const Filter& filter, const Settings& se
 }
 
 namespace {
-// Checks 2–4 of SPEC §2 at γ. lambda_hint > 0: a multiplier to try first in check 4
-// (the synthesis LMI's own; any multiplier that passes is a valid witness).
-Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings,
-                    double lambda_hint = 0) {
+// Checks 2–4 of SPEC §2 at γ; none uses the synthesis solver's numbers (SPEC §2).
+Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings) {
   Certificate c;
   c.gamma = gamma;
   c.norm_A_F = filter.A_F.norm();
@@ -122,7 +120,7 @@ Certificate certify(const Plant& plant, const Filter& filter, double gamma, cons
   // check 4: the robust analysis LMI at γ, decided by the bounded-real lemma with the
   // best S-procedure multiplier (no SDP solver involved; certify/scaled_bounded_real.hpp)
   certify::ScaledBoundedReal robust(plant, es);
-  const certify::ScaledBoundedRealTest br = robust.test(gamma, true, lambda_hint);
+  const certify::ScaledBoundedRealTest br = robust.test(gamma);
   c.robust_feasible_at_gamma = br.feasible;
   c.robust_multiplier = br.lambda;
   c.robust_scaled_norm = br.scaled_norm;
@@ -224,10 +222,10 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings,
   // boundary) can make the recovered filter miss check 4 by a hair; then it is tried
   // once more at (1 + relative_gap_tol)·γ², still within the solver's accuracy.
   res.gamma_squared = pt.g;
-  res.certificate = certify(plant, res.filter, std::sqrt(pt.g), settings, pt.lambda);
+  res.certificate = certify(plant, res.filter, std::sqrt(pt.g), settings);
   if (res.certificate.schur_stable && !res.certificate.robust_feasible_at_gamma) {
     res.gamma_squared = pt.g * (1 + settings.relative_gap_tol);
-    res.certificate = certify(plant, res.filter, std::sqrt(res.gamma_squared), settings, pt.lambda);
+    res.certificate = certify(plant, res.filter, std::sqrt(res.gamma_squared), settings);
   }
   res.gamma = std::sqrt(res.gamma_squared);
   Certificate& cert = res.certificate;
