@@ -14,10 +14,14 @@
 // so (strict bounded-real lemma) it is feasible in P for this λ iff Ā is Schur stable
 // and ‖G_λ‖∞ < 1. G_λ = D G₁ D⁻¹ with D = diag(I, √λ I) on the uncertainty channel,
 // so log σ_max(G_λ(e^{jθ})) is convex in log λ for every θ (Sezginer & Overton 1990)
-// and ‖G_λ‖∞ is unimodal in log λ: a golden-section search over log λ finds the best
-// multiplier. Each ‖G_λ‖∞ comes from the symplectic-pencil algorithm (hinf_norm.hpp),
-// whose certified upper value is what is compared with 1.
+// and ‖G_λ‖∞ is unimodal in log λ: a bracketing search with the slopes of log‖G_λ‖∞
+// (from the top singular vectors at the peak frequency; tangent meeting points and
+// slope secants) finds the best multiplier, with a golden-section search on the norm
+// alone as the fallback. Each ‖G_λ‖∞ comes from the symplectic-pencil algorithm
+// (hinf_norm.hpp), whose certified upper value is what is compared with 1.
 #pragma once
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "hinf/synth/plant.hpp"
@@ -58,6 +62,14 @@ class ScaledBoundedReal {
   int evaluations() const { return evaluations_; }
 
  private:
+  struct Slope {
+    double norm = INFINITY;  // certified upper value of ‖G_λ‖∞
+    double slope = 0;        // d log‖G_λ‖∞ / d log λ at the peak frequency
+    bool slope_ok = false;
+  };
+  Slope scaled_norm_and_slope(double gamma, double log_lambda);
+  double scaled_norm(double gamma, double lambda, double norm_tolerance);
+
   const synth::Plant& plant_;
   synth::StateSpace e_;
   int pq_ = 0;
