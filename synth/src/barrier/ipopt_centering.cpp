@@ -192,6 +192,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   CenteringResult r;
   r.z = tnlp->z_.size() == z0.size() ? tnlp->z_ : z0;
   if (tnlp->stalled_ && tnlp->smallest_z_.size() == z0.size()) r.z = tnlp->smallest_z_;
+  r.stalled = tnlp->stalled_;
   r.iterations = tnlp->iterations_;
   // λ² at the returned point itself (the gap bound of the caller depends on it)
   double l2 = std::numeric_limits<double>::infinity();

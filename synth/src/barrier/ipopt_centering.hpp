@@ -16,6 +16,7 @@ struct CenteringResult {
   double lambda2 = 0;  // Newton decrement² at z (+inf if it could not be computed)
   bool centred = false;
   bool stopped_early = false;  // early-exit predicate met (phase I found s < 0)
+  bool stalled = false;        // centred by the stall rule (λ² stopped falling: round-off)
   std::string ipopt_status;
 };
 
