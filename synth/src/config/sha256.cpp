@@ -1,17 +1,17 @@
 #include "config/sha256.hpp"
 
-#include <openssl/evp.h>
+#include <nettle/sha2.h>
 
-#include "hinf/synth/status.hpp"
+#include <cstdint>
 
 namespace hinf::synth {
 
 std::string sha256_hex(const std::string& data) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  if (EVP_Digest(data.data(), data.size(), digest, &length, EVP_sha256(), nullptr) != 1 ||
-      length != 32)
-    throw Error(ErrorCode::NumericalFailure, "SHA-256: OpenSSL EVP_Digest failed");
+  sha256_ctx ctx;
+  sha256_init(&ctx);
+  sha256_update(&ctx, data.size(), reinterpret_cast<const std::uint8_t*>(data.data()));
+  std::uint8_t digest[SHA256_DIGEST_SIZE];
+  sha256_digest(&ctx, SHA256_DIGEST_SIZE, digest);
   static const char hex[] = "0123456789abcdef";
   std::string out(64, '0');
   for (unsigned i = 0; i < 32; ++i) {
