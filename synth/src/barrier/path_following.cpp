@@ -168,7 +168,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       // overshooting only makes the last centring harder (its Hessian's condition grows like t²).
       const double t_new =
           phase == 2 ? std::min(growth * t, std::max(2.0 * t, 1.5 * t * gap / gap_goal)) : growth * t;
-      // predictor along the central path: z + (t_new − t)·dz/dt, kept inside the domain
+      // predictor along the central path, kept inside the domain
       if (b.path_tangent(z, dz)) {
         double alpha = 1.0;
         // x*(t) − x* = O(1/t) on the central path: extrapolate linearly in 1/t, i.e.
