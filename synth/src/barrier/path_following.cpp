@@ -75,6 +75,10 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
     int retries = 0;
     bool have_centred = false;
     bool last_stalled = false;
+    // The last centred gap, relative to |objective| there (phase II's tests below).
+    auto last_relative_gap = [&] {
+      return last_gap / std::max(std::abs(b.linear_objective(last_centred)), 1e-12);
+    };
     if (!(t > 0) || !std::isfinite(t)) t = nu / std::max(obj0, 1e-8);
     t = std::max(t, 1e-3 * nu / std::max(obj0, 1e-8));
     for (int k = 0;; ++k) {
@@ -87,8 +91,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       // (measured: random n = 10 67 → 61 Newton iterations, same final gap). Not above
       // 10·tol: a full budget there still reaches 1e-6 on small random plants
       // (test_solver's GapBracketAndCertificate).
-      if (last_stalled && phase == 2 &&
-          last_gap <= 10 * settings.relative_gap_tol * std::max(std::abs(b.linear_objective(last_centred)), 1e-12))
+      if (last_stalled && phase == 2 && last_relative_gap() <= 10 * settings.relative_gap_tol)
         co.max_iterations = std::min(co.max_iterations, co.give_up_iterations);
       co.max_cpu_time = remaining();
       co.phase1_stop_negative = (phase == 1);
@@ -117,9 +120,8 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
         // once if that gap is within kAcceptAtOnce·tol; otherwise the step in t is
         // shortened (from the last centred point, up to 4 times) and only then is a gap up
         // to max(100·tol, 1e-5) accepted.
-        const double obj_c = std::max(std::abs(b.linear_objective(last_centred)), 1e-12);
         const bool close =
-            phase == 2 && have_centred && last_gap <= kAcceptAtOnce * settings.relative_gap_tol * obj_c;
+            phase == 2 && have_centred && last_relative_gap() <= kAcceptAtOnce * settings.relative_gap_tol;
         const bool retry = have_centred && !close && retries < 4 && !out_of_budget(sol);
         if (retry) {
           ++retries;
@@ -129,7 +131,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
           continue;
         }
         if (phase == 2 && have_centred &&
-            last_gap <= std::max(100 * settings.relative_gap_tol, 1e-5) * obj_c) {
+            last_relative_gap() <= std::max(100 * settings.relative_gap_tol, 1e-5)) {
           sol.gap = last_gap;
           sol.detail = "final centring stopped by round-off; returned the last centred point";
           ok = true;

@@ -71,11 +71,7 @@ ScaledBoundedReal::ScaledBoundedReal(const synth::Plant& plant, const synth::Sta
   C_.topRows(plant.l()) = e_.C;
 }
 
-double ScaledBoundedReal::scaled_norm(double gamma, double lambda) {
-  return scaled_norm(gamma, lambda, kNormTolerance);
-}
-
-double ScaledBoundedReal::scaled_norm(double gamma, double lambda, double norm_tolerance) {
+synth::HinfNorm ScaledBoundedReal::scaled_hinf_norm(double gamma, double lambda, double norm_tolerance) {
   const int n = plant_.n();
   B_.leftCols(pq_) = e_.B / gamma;
   if (plant_.uncertain()) {
@@ -84,7 +80,11 @@ double ScaledBoundedReal::scaled_norm(double gamma, double lambda, double norm_t
     C_.block(plant_.l(), 0, plant_.k(), n) = r * plant_.E;
   }
   ++evaluations_;
-  return synth::discrete_hinf_norm(e_.A, B_, C_, D_, norm_tolerance).norm;
+  return synth::discrete_hinf_norm(e_.A, B_, C_, D_, norm_tolerance);
+}
+
+double ScaledBoundedReal::scaled_norm(double gamma, double lambda) {
+  return scaled_hinf_norm(gamma, lambda, kNormTolerance).norm;
 }
 
 double ScaledBoundedReal::gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol) {
@@ -101,15 +101,8 @@ double ScaledBoundedReal::gamma_at_multiplier(double lambda, double gamma_lo, do
 }
 
 ScaledBoundedReal::Slope ScaledBoundedReal::scaled_norm_and_slope(double gamma, double log_lambda) {
-  const double lambda = std::exp(log_lambda);
   Slope out;
-  const int n = plant_.n();
-  B_.leftCols(pq_) = e_.B / gamma;
-  const double r = std::sqrt(lambda);
-  B_.block(0, pq_, n, plant_.j()) = plant_.H / r;
-  C_.block(plant_.l(), 0, plant_.k(), n) = r * plant_.E;
-  ++evaluations_;
-  const synth::HinfNorm h = synth::discrete_hinf_norm(e_.A, B_, C_, D_, kNormTolerance);
+  const synth::HinfNorm h = scaled_hinf_norm(gamma, std::exp(log_lambda), kNormTolerance);
   out.norm = h.norm;
   // d‖G_λ‖∞/d log λ at the peak: G_λ = [G₁₁, G₁₂/√λ; √λ G₂₁, G₂₂] in the blocks (l, k) ×
   // (p + q, j), so ∂G/∂ log λ = ½[0, −G₁₂; G₂₁, 0] and, with u, v the top singular
@@ -222,7 +215,7 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   // 3. Within the norms' accuracy of 1 the verdict depends on their rounding: decide it
   //    with one norm to 1e-13 at the best multiplier.
   if (!(best_f < 1.0) && best_f < 1.0 + kFringe) {
-    const double f = scaled_norm(gamma, std::exp(best_d), kFineNormTolerance);
+    const double f = scaled_hinf_norm(gamma, std::exp(best_d), kFineNormTolerance).norm;
     if (f < best_f) best_f = f;
   }
   out.norm_evaluations = evaluations_ - evaluations_before;

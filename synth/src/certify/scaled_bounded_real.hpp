@@ -24,6 +24,7 @@
 
 #include <Eigen/Dense>
 
+#include "hinf/synth/hinf_norm.hpp"
 #include "hinf/synth/plant.hpp"
 #include "hinf/synth/state_space.hpp"
 
@@ -54,7 +55,8 @@ class ScaledBoundedReal {
   ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true);
 
   // The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the
-  // fixed multiplier lambda, bisected in (gamma_lo, gamma_hi]: gamma_hi must pass;
+  // fixed multiplier lambda, by regula falsi (Illinois) on (gamma_lo, gamma_hi]: gamma_hi
+  // must pass;
   // gamma_lo is the nominal norm ‖C̄(zI − Ā)⁻¹B̄‖∞ (check 3's value), below which no γ
   // passes. Every γ it returns is certified: the analysis LMI is feasible there.
   double gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol);
@@ -67,8 +69,9 @@ class ScaledBoundedReal {
     double slope = 0;        // d log‖G_λ‖∞ / d log λ at the peak frequency
     bool slope_ok = false;
   };
+  // ‖G_λ‖∞ at (γ, λ) to norm_tolerance, with its peak: the one place that scales B, C.
+  synth::HinfNorm scaled_hinf_norm(double gamma, double lambda, double norm_tolerance);
   Slope scaled_norm_and_slope(double gamma, double log_lambda);
-  double scaled_norm(double gamma, double lambda, double norm_tolerance);
 
   const synth::Plant& plant_;
   synth::StateSpace e_;
