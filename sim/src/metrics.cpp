@@ -4,6 +4,36 @@
 #include <cmath>
 
 namespace hinf::sim {
+namespace {
+
+// First t_k such that e(j) < threshold for all j ≥ k (scanning back from the end for the
+// last sample at or above it); empty if the last sample is not below.
+std::optional<double> settle_time(const std::vector<double>& t, const std::vector<double>& e, double threshold) {
+  const std::size_t n = t.size();
+  if (n == 0 || !(e[n - 1] < threshold)) return std::nullopt;
+  std::size_t k = n;
+  while (k > 0 && e[k - 1] < threshold) --k;
+  return t[k];
+}
+
+// r(k) = sqrt(mean of e(j)² over t_j ∈ (t_k − window, t_k]); a running sum in long double
+// (the squares span 1e4 m² to 1e-4 m², so cancellation in double would leave drift).
+std::vector<double> trailing_rms(const std::vector<double>& t, const std::vector<double>& e, double window) {
+  std::vector<double> r(t.size());
+  long double sum = 0;
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    sum += static_cast<long double>(e[k]) * e[k];
+    while (t[first] <= t[k] - window) {
+      sum -= static_cast<long double>(e[first]) * e[first];
+      ++first;
+    }
+    r[k] = std::sqrt(static_cast<double>(std::max(sum, 0.0L) / static_cast<long double>(k + 1 - first)));
+  }
+  return r;
+}
+
+}  // namespace
 
 FilterMetrics compute_metrics(const std::vector<double>& t,
                               const std::vector<double>& position_error,
@@ -30,12 +60,11 @@ FilterMetrics compute_metrics(const std::vector<double>& t,
     m.velocity_rms_mps = std::sqrt(sum_v / count);
     m.position_max_m = max_p;
   }
-  // Scan backwards for the last sample at or above the threshold.
-  if (n > 0 && position_error[n - 1] < settings.converge_threshold_m) {
-    std::size_t k = n;
-    while (k > 0 && position_error[k - 1] < settings.converge_threshold_m) --k;
-    m.converge_time_s = t[k];
-  }
+  m.converge_time_pointwise_s = settle_time(t, position_error, settings.converge_threshold_m);
+  m.converge_time_s = settings.converge_window_s > 0
+                          ? settle_time(t, trailing_rms(t, position_error, settings.converge_window_s),
+                                        settings.converge_threshold_m)
+                          : m.converge_time_pointwise_s;
   return m;
 }
 

@@ -70,7 +70,8 @@ std::string format_runs_csv(const std::vector<RunResult>& runs) {
   std::string out = "run,seed";
   if (runs.empty()) return out + "\n";
   for (const auto& f : runs.front().filters)
-    for (const char* c : {"_position_rms_m", "_velocity_rms_mps", "_position_max_m", "_converge_time_s", "_diverged"})
+    for (const char* c : {"_position_rms_m", "_velocity_rms_mps", "_position_max_m", "_converge_time_s",
+                          "_converge_time_pointwise_s", "_diverged"})
       out += "," + f.name + c;
   out += '\n';
   auto cell = [&](const std::optional<double>& v) {
@@ -84,6 +85,7 @@ std::string format_runs_csv(const std::vector<RunResult>& runs) {
       cell(f.metrics.velocity_rms_mps);
       cell(f.metrics.position_max_m);
       cell(f.metrics.converge_time_s);
+      cell(f.metrics.converge_time_pointwise_s);
       out += f.metrics.diverged ? ",1" : ",0";
     }
     out += '\n';
@@ -104,6 +106,7 @@ std::string format_summary_json(const Scenario& s, const std::vector<RunResult>&
   os << "  \"truth_delta\": " << json_num(s.truth_delta) << ",\n";
   os << "  \"steady_state_start_s\": " << json_num(ms.steady_state_start_s) << ",\n";
   os << "  \"converge_threshold_m\": " << json_num(ms.converge_threshold_m) << ",\n";
+  os << "  \"converge_window_s\": " << json_num(ms.converge_window_s) << ",\n";
   os << "  \"gains\": {";
   bool first = true;
   for (const auto& [name, info] : ctx.gains) {
@@ -121,14 +124,15 @@ std::string format_summary_json(const Scenario& s, const std::vector<RunResult>&
       const FilterMetrics& m = o.metrics;
       os << "\"position_rms_m\": " << json_opt(m.position_rms_m) << ", \"velocity_rms_mps\": "
          << json_opt(m.velocity_rms_mps) << ", \"position_max_m\": " << json_opt(m.position_max_m)
-         << ", \"converge_time_s\": " << json_opt(m.converge_time_s) << ", \"converged\": "
+         << ", \"converge_time_s\": " << json_opt(m.converge_time_s)
+         << ", \"converge_time_pointwise_s\": " << json_opt(m.converge_time_pointwise_s) << ", \"converged\": "
          << (m.converge_time_s ? "true" : "false") << ", \"diverged\": " << (m.diverged ? "true" : "false")
          << ", \"diverged_at_s\": " << json_opt(m.diverged_at_s) << ", \"failed_steps\": " << o.health.failed_steps;
       if (o.health.failed_steps > 0)
         os << ", \"first_failure\": " << json_str(o.health.first_failure)
            << ", \"first_failure_t_s\": " << json_num(o.health.first_failure_t);
     } else {
-      std::vector<std::optional<double>> prms, vrms, pmax, conv;
+      std::vector<std::optional<double>> prms, vrms, pmax, conv, conv_pointwise;
       long diverged = 0, never = 0, failed_runs = 0;
       for (const auto& run : runs) {
         const FilterOutcome& o = run.filters[f];
@@ -136,12 +140,14 @@ std::string format_summary_json(const Scenario& s, const std::vector<RunResult>&
         vrms.push_back(o.metrics.velocity_rms_mps);
         pmax.push_back(o.metrics.position_max_m);
         conv.push_back(o.metrics.converge_time_s);
+        conv_pointwise.push_back(o.metrics.converge_time_pointwise_s);
         diverged += o.metrics.diverged ? 1 : 0;
         never += (!o.metrics.diverged && !o.metrics.converge_time_s) ? 1 : 0;
         failed_runs += o.health.failed_steps > 0 ? 1 : 0;
       }
       os << "\n      \"position_rms_m\": " << json_stats(prms) << ",\n      \"velocity_rms_mps\": " << json_stats(vrms)
          << ",\n      \"position_max_m\": " << json_stats(pmax) << ",\n      \"converge_time_s\": " << json_stats(conv)
+         << ",\n      \"converge_time_pointwise_s\": " << json_stats(conv_pointwise)
          << ",\n      \"diverged_runs\": " << diverged << ", \"never_converged_runs\": " << never
          << ", \"runs_with_failed_steps\": " << failed_runs << "\n    ";
     }

@@ -10,6 +10,7 @@ MetricSettings Scenario::metric_settings() const {
   MetricSettings m;
   m.steady_state_start_s = steady_state_start ? *steady_state_start : 0.5 * duration;
   m.converge_threshold_m = converge_threshold_m;
+  m.converge_window_s = converge_window_s;
   return m;
 }
 

@@ -378,13 +378,18 @@ Scenario parse_scenario(const std::string& text, const std::string& source_name)
 
   if (top.has("metrics")) {
     const Node m = top.child("metrics");
-    m.require_map({"steady_state_start", "converge_threshold"});
+    m.require_map({"steady_state_start", "converge_threshold", "converge_window"});
     if (m.has("steady_state_start")) {
       const double st = m.nonnegative("steady_state_start", 0);
       if (st > s.duration) m.fail("steady_state_start", "= " + fmt(st) + ": beyond the duration " + fmt(s.duration));
       s.steady_state_start = st;
     }
     s.converge_threshold_m = m.positive("converge_threshold", s.converge_threshold_m);
+    if (m.has("converge_window")) {
+      const double w = m.nonnegative("converge_window", 0);
+      if (w > s.duration) m.fail("converge_window", "= " + fmt(w) + ": longer than the duration " + fmt(s.duration));
+      s.converge_window_s = w;
+    }
   }
   return s;
 }

@@ -41,6 +41,40 @@ TEST(Metrics, ConvergenceIsFromTheLastExcursion) {
   EXPECT_FALSE(compute_metrics(t, p, v, std::nullopt, s).converge_time_s.has_value());
 }
 
+TEST(Metrics, WindowedConvergenceIgnoresAnIsolatedOutlier) {
+  // t = 0..19 s, error 5 m until t = 3, then 0.2 m with one 3 m outlier at t = 12.
+  std::vector<double> t, p, v(20, 0.0);
+  for (int k = 0; k < 20; ++k) {
+    t.push_back(k);
+    p.push_back(k <= 3 ? 5.0 : (k == 12 ? 3.0 : 0.2));
+  }
+  MetricSettings s;
+  s.converge_threshold_m = 1.0;
+  auto m = compute_metrics(t, p, v, std::nullopt, s);  // no window: from the sample after the outlier
+  EXPECT_DOUBLE_EQ(*m.converge_time_s, 13.0);
+  EXPECT_DOUBLE_EQ(*m.converge_time_pointwise_s, 13.0);
+  s.converge_window_s = 10.0;  // trailing window (t − 10, t]: ten samples
+  m = compute_metrics(t, p, v, std::nullopt, s);
+  EXPECT_DOUBLE_EQ(*m.converge_time_pointwise_s, 13.0);
+  // t = 12: samples 3..12 = 5, 0.2 ×8, 3 → RMS sqrt((25 + 0.32 + 9)/10) = 1.85 ≥ 1;
+  // t = 13..19: samples 0.2 ×9 and 3 → sqrt((0.36 + 9)/10) = 0.967 < 1.
+  EXPECT_DOUBLE_EQ(*m.converge_time_s, 13.0);
+  s.converge_window_s = 20.0;  // whole history: the initial 5 m samples keep it above 1 until
+  // sum/(k+1) < 1: (100 + 9 + 0.04·(k − 4)) / (k + 1) < 1 never holds for k ≤ 19 → none
+  m = compute_metrics(t, p, v, std::nullopt, s);
+  EXPECT_FALSE(m.converge_time_s.has_value());
+  EXPECT_DOUBLE_EQ(*m.converge_time_pointwise_s, 13.0);
+  // Outlier of 2 m and a 5 s window (five samples): t = 7 still holds the 5 m sample
+  // (sqrt((25 + 0.16)/5) = 2.24); from t = 8 every window is below 1, the outlier's worst
+  // (t = 12..16: 0.2 ×4 and 2) sqrt((0.16 + 4)/5) = 0.912 — converged at 8 although the
+  // pointwise error only settles at 13.
+  p[12] = 2.0;
+  s.converge_window_s = 5.0;
+  m = compute_metrics(t, p, v, std::nullopt, s);
+  EXPECT_DOUBLE_EQ(*m.converge_time_s, 8.0);
+  EXPECT_DOUBLE_EQ(*m.converge_time_pointwise_s, 13.0);
+}
+
 TEST(Metrics, DivergedHasNoMetrics) {
   std::vector<double> t = {0, 1, 2}, p = {1, 2, 3}, v = {0, 0, 0};
   const auto m = compute_metrics(t, p, v, 1L, MetricSettings{});

@@ -68,6 +68,19 @@ TEST(ScenarioYaml, BadValuesNameTheKey) {
   EXPECT_NE(error_of("duration: [\n").find("not valid YAML"), std::string::npos);
 }
 
+TEST(ScenarioYaml, ConvergeWindow) {
+  EXPECT_DOUBLE_EQ(parse_scenario(kMinimal, "/tmp/s.yaml").metric_settings().converge_window_s, 0.0);
+  EXPECT_DOUBLE_EQ(parse_scenario(kMinimal + "metrics: {converge_window: 2.5}\n", "/tmp/s.yaml")
+                       .metric_settings()
+                       .converge_window_s,
+                   2.5);
+  EXPECT_NE(error_of(kMinimal + "metrics: {converge_window: -1}\n").find("metrics.converge_window"),
+            std::string::npos);
+  const std::string e = error_of(kMinimal + "metrics: {converge_window: 11}\n");
+  EXPECT_NE(e.find("metrics.converge_window"), std::string::npos) << e;
+  EXPECT_NE(e.find("longer than the duration"), std::string::npos) << e;
+}
+
 TEST(ScenarioYaml, NoiseListsAndControl) {
   const auto s = parse_scenario(kMinimal + R"(
 control: {law: state_feedback, on: truth, K: [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0,0,0]]}

@@ -8,6 +8,10 @@ namespace hinf::sim {
 struct MetricSettings {
   double steady_state_start_s = 0.0;  // window [start, end] for the RMS/max metrics
   double converge_threshold_m = 1.0;  // position-error threshold for converge_time_s
+  // converge_time_s tests the RMS of |e_p| over the trailing window (t_k − W, t_k]; 0 (the
+  // default) tests |e_p(k)| itself. A window makes the metric robust to isolated
+  // measurement outliers, which any linear filter passes on in part.
+  double converge_window_s = 0.0;
 };
 
 struct FilterMetrics {
@@ -16,9 +20,12 @@ struct FilterMetrics {
   std::optional<double> position_rms_m;    // sqrt(mean |e_p|²) over the window
   std::optional<double> velocity_rms_mps;  // sqrt(mean |e_v|²) over the window
   std::optional<double> position_max_m;    // max |e_p| over the window
-  // First t_k such that |e_p(j)| < threshold for every j ≥ k; empty if the last sample
-  // is not below the threshold (never converged).
+  // First t_k such that e(j) < threshold for every j ≥ k, e the trailing-window RMS of
+  // |e_p| (MetricSettings::converge_window_s; |e_p| itself for a zero window); empty if
+  // the last sample is not below the threshold (never converged).
   std::optional<double> converge_time_s;
+  // The same with e = |e_p| whatever the window (equal to converge_time_s for W = 0).
+  std::optional<double> converge_time_pointwise_s;
 };
 
 // t, position_error (|e_p|, m), velocity_error (|e_v|, m/s): one entry per step.

@@ -69,6 +69,7 @@ struct Scenario {
   // metrics
   std::optional<double> steady_state_start;  // s; default duration/2
   double converge_threshold_m = 1.0;
+  double converge_window_s = 0.0;  // s; 0 = pointwise error (MetricSettings)
   bool plots = true;
 
   long steps() const;                 // number of samples
