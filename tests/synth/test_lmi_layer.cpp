@@ -8,6 +8,8 @@
 //  - Ipopt's second-order derivative checker on the barrier (phase I and phase II).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Dense>
 #include <cstdio>
 #include <random>
@@ -240,6 +242,44 @@ TEST(LmiLayer, Theorem1GradientHessianMatchDenseTraces) {
   }
 }
 
+// Check 1 on graded matrices, like LMI (20) when a config's H and E are far apart in
+// scale: M = S·M̃·S, M̃ = −Q diag(1e-10 … 1) Qᵀ (Q random orthogonal, 8×8), S = diag(1, …,
+// 1, 1e4, 1e4), so ‖M‖ ~ 1e8 while the eigenvalue nearest zero is ~ −1e-10, far below a
+// symmetric eigensolver's absolute accuracy on M (~ε‖M‖; on seeds 1 and 4 it returns a
+// positive value). Reference: −1/λ_max(M⁻¹) with M⁻¹ = −S⁻¹ Q diag(1/λ) Qᵀ S⁻¹ from the
+// construction, in long double (M itself is rounded entrywise, which moves that
+// eigenvalue by ~cond(M̃)·ε ≈ 1e-6 relative).
+TEST(LmiLayer, DefinitenessCheckOnGradedMatrix) {
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    std::mt19937 g(seed);
+    std::normal_distribution<double> nd;
+    const int n = 8;
+    MatrixXd X(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) X(i, j) = nd(g);
+    const MatrixXd Q = Eigen::HouseholderQR<MatrixXd>(X).householderQ();
+    VectorXd lam(n);
+    for (int i = 0; i < n; ++i) lam(i) = std::pow(10.0, -10.0 + 10.0 * i / (n - 1));
+    VectorXd sc = VectorXd::Ones(n);
+    sc(6) = sc(7) = 1e4;
+    const MatrixXd Mt = -(Q * lam.asDiagonal() * Q.transpose());
+    const MatrixXd M = sc.asDiagonal() * (0.5 * (Mt + Mt.transpose())) * sc.asDiagonal();
+    using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+    const Eigen::Matrix<long double, Eigen::Dynamic, 1> isc = sc.cast<long double>().cwiseInverse();
+    const MatL Ninv = isc.asDiagonal() * Q.cast<long double>() *
+                      lam.cast<long double>().cwiseInverse().asDiagonal() * Q.transpose().cast<long double>() *
+                      isc.asDiagonal();
+    const long double mu = Eigen::SelfAdjointEigenSolver<MatL>(Ninv, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+    const double ref = static_cast<double>(-1.0L / mu);
+    const auto d = hinf::certify::check_negative_definite(M, 0.0);
+    ASSERT_TRUE(d.negative_definite) << "seed " << seed << ": max_eig " << d.max_eig << ", reference " << ref;
+    EXPECT_NEAR(d.max_eig, ref, 1e-4 * std::abs(ref)) << "seed " << seed;
+    // the margin: M ≺ −μI iff μ < |λ_max|
+    EXPECT_TRUE(hinf::certify::check_negative_definite(M, 0.5 * std::abs(ref)).negative_definite);
+    EXPECT_FALSE(hinf::certify::check_negative_definite(M, 2.0 * std::abs(ref)).negative_definite);
+  }
+}
+
 TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
   std::mt19937 g(14);
   for (const Dims& d : kDims) {
@@ -333,6 +373,11 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   const VectorXd x = 0.05 * rnd_vec(g, L.num_params());
   ASSERT_TRUE(b.inside(x));
   check_barrier_fd(b, x, g, 1e-6);
+  // W = slack⁻¹ is symmetrised exactly (an in-place W = (W + Wᵀ)/2 through Eigen aliases
+  // and leaves W asymmetric at round-off level, which moved the solver's path)
+  VectorXd gx;
+  ASSERT_TRUE(b.gradient(x, gx));
+  EXPECT_EQ((b.W() - b.W().transpose()).cwiseAbs().maxCoeff(), 0.0);
 }
 
 // A phase-I point (x, s) of T: x = 0.3·N(0, 1) entries, s = max(0, λ_max(M(x))) + room, so

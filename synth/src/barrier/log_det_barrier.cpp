@@ -66,8 +66,10 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   if (!factor(z)) return false;
   if (have_derivs_ && same(z, z_derivs_)) return true;
   const int d = dim();
-  W_ = llt_.solve(Eigen::MatrixXd::Identity(N_, N_));
-  W_ = 0.5 * (W_ + W_.transpose());
+  W_.setIdentity(N_, N_);
+  llt_.solveInPlace(W_);
+  for (int j = 0; j < N_; ++j)  // W ← (W + Wᵀ)/2 in place (exactly symmetric)
+    for (int i = j + 1; i < N_; ++i) W_(i, j) = W_(j, i) = 0.5 * (W_(i, j) + W_(j, i));
   // ∂φ/∂xᵢ = tr(W Mᵢ) with Mᵢ the derivative of M; the slack is −M, so
   // ∂(−log det slack)/∂xᵢ = tr(slack⁻¹ Mᵢ) = tr(W Mᵢ).
   Eigen::VectorXd gx;
@@ -116,18 +118,18 @@ bool LogDetBarrier::newton_decrement2(const Eigen::VectorXd& z, double& lambda2)
   if (!gradient(z, g)) return false;
   // Near the end of the path the Hessian's condition number grows like t²; a
   // pivoted LDLᵀ still gives the decrement where a plain Cholesky may break down.
-  Eigen::LDLT<Eigen::MatrixXd> H(hess_);
-  if (H.info() != Eigen::Success) return false;
-  lambda2 = g.dot(H.solve(g));
+  ldlt_.compute(hess_);
+  if (ldlt_.info() != Eigen::Success) return false;
+  lambda2 = g.dot(ldlt_.solve(g));
   return std::isfinite(lambda2) && lambda2 >= 0;
 }
 
 bool LogDetBarrier::path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) {
   if (!derivatives(z)) return false;
   const Eigen::VectorXd cz = objective_gradient();
-  Eigen::LDLT<Eigen::MatrixXd> H(hess_);
-  if (H.info() != Eigen::Success) return false;
-  dz = -H.solve(cz);
+  ldlt_.compute(hess_);
+  if (ldlt_.info() != Eigen::Success) return false;
+  dz = -ldlt_.solve(cz);
   return dz.allFinite();
 }
 

@@ -63,6 +63,7 @@ class LogDetBarrier {
   Eigen::VectorXd grad_phi_;   // ∇ of the barrier part (no t·c term)
   Eigen::MatrixXd hess_;       // ∇² of the barrier part
   Eigen::MatrixXd Hs_;         // workspace
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;  // of hess_ (Newton decrement, path tangent); reused storage
 };
 
 }  // namespace hinf::barrier

@@ -1,5 +1,6 @@
 #include "certify/dense_lmi.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace hinf::certify {
@@ -66,15 +67,38 @@ MatrixXd theorem1_matrix(const synth::Plant& P, const Theorem1Point& x) {
 
 DefinitenessCheck check_negative_definite(const MatrixXd& M, double margin) {
   DefinitenessCheck c;
-  const Eigen::VectorXd ev =
-      Eigen::SelfAdjointEigenSolver<MatrixXd>(0.5 * (M + M.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
-  c.max_eig = ev(ev.size() - 1);
+  const MatrixXd Ms = 0.5 * (M + M.transpose());
+  // The large eigenvalues (and ‖M‖₂) come accurately from a symmetric eigensolver, the
+  // one nearest zero does not: its absolute error is ~ε‖M‖₂, and M is graded (with a
+  // config's H and E far apart in scale, ‖M‖₂ ~ 1e8 against a margin of 1e-9).
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<MatrixXd>(Ms, Eigen::EigenvaluesOnly).eigenvalues();
   const double norm = std::max(std::abs(ev(0)), std::abs(ev(ev.size() - 1)));
-  c.max_eig_relative = norm > 0 ? c.max_eig / norm : 0.0;
-  MatrixXd N = -0.5 * (M + M.transpose());
+  c.max_eig = ev(ev.size() - 1);
+  // Definiteness by Cholesky of N = −M − margin·I after Jacobi scaling D^{-1/2} N D^{-1/2}
+  // (D = diag N; a congruence, so the inertia is N's — Sylvester). Cholesky's backward
+  // error is then relative to each entry's own scale. If it succeeds, the eigenvalue
+  // nearest zero is recomputed as −1/λ_max(N⁻¹), N⁻¹ = D^{-1/2} Ñ⁻¹ D^{-1/2}: the
+  // largest eigenvalue of N⁻¹ is one a symmetric eigensolver gets to relative accuracy.
+  MatrixXd N = -Ms;
   N.diagonal().array() -= margin;
-  Eigen::LLT<MatrixXd> llt(N);
-  c.negative_definite = llt.info() == Eigen::Success && c.max_eig < 0;
+  const Eigen::ArrayXd d = N.diagonal().array();
+  if ((d > 0).all() && d.allFinite()) {
+    const Eigen::VectorXd r = d.rsqrt().matrix();
+    const MatrixXd Nt = r.asDiagonal() * N * r.asDiagonal();
+    const Eigen::LLT<MatrixXd> llt(Nt);
+    if (llt.info() == Eigen::Success) {
+      MatrixXd Ninv = llt.solve(MatrixXd::Identity(N.rows(), N.cols()));
+      Ninv = r.asDiagonal() * Ninv * r.asDiagonal();
+      const MatrixXd Ninv_sym = 0.5 * (Ninv + Ninv.transpose());
+      const double mu =
+          Eigen::SelfAdjointEigenSolver<MatrixXd>(Ninv_sym, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+      if (mu > 0 && std::isfinite(mu)) {
+        c.max_eig = -1.0 / mu - margin;  // largest eigenvalue of M itself
+        c.negative_definite = true;
+      }
+    }
+  }
+  c.max_eig_relative = norm > 0 ? c.max_eig / norm : 0.0;
   return c;
 }
 

@@ -18,9 +18,10 @@ struct Theorem1Point {
 Eigen::MatrixXd theorem1_matrix(const synth::Plant& plant, const Theorem1Point& x);
 
 struct DefinitenessCheck {
-  double max_eig = 0;           // largest eigenvalue of M
+  double max_eig = 0;           // largest eigenvalue of M (to relative accuracy when M ≺ 0)
   double max_eig_relative = 0;  // max_eig / ‖M‖₂
-  bool negative_definite = false;  // Cholesky of −M − margin·I succeeded
+  // Cholesky of −M − margin·I, Jacobi-scaled (a congruence: same inertia), succeeded
+  bool negative_definite = false;
 };
 DefinitenessCheck check_negative_definite(const Eigen::MatrixXd& M, double margin);
 

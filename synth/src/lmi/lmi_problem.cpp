@@ -244,12 +244,26 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
         continue;
       }
       // block (j, l): rows i (a of h), cols kk (a of k):
-      //   P₁(l, i)·Q₁(j, kk)  +  Q₂(j, l)·P₂(kk, i)
+      //   f·P₁(l, i)·Q₁(j, kk)  +  f·Q₂(j, l)·P₂(kk, i)
+      // one pass over each column of the block (contiguous in i), with the two factors
+      // that run over i transposed once so that they are contiguous too
+      fP1t_.noalias() = f * P1.transpose();  // (a × b'): fP1t(i, l) = f·P₁(l, i)
+      P2t_.noalias() = P2.transpose();       // (a × a'): P2t(i, kk) = P₂(kk, i)
       for (int j = 0; j < h.b; ++j)
         for (int l = 0; l < k.b; ++l) {
-          auto blk = Hraw_.block(oh + h.a * j, ok + k.a * l, h.a, k.a);
-          blk.noalias() += f * (P1.row(l).transpose() * Q1.row(j));
-          blk.noalias() += (f * Q2(j, l)) * P2.transpose();
+          const double fq2 = f * Q2(j, l);
+          const double* p1 = fP1t_.col(l).data();
+          for (int kk = 0; kk < k.a; ++kk) {
+            const double q1 = Q1(j, kk);
+            const double* p2 = P2t_.col(kk).data();
+            double* hc = &Hraw_(oh + h.a * j, ok + kk + k.a * l);
+            for (int i = 0; i < h.a; ++i) {
+              double v = hc[i];
+              v += p1[i] * q1;
+              v += fq2 * p2[i];
+              hc[i] = v;
+            }
+          }
         }
     }
   }
@@ -258,10 +272,10 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
 }
 
 void LmiProblem::contract_raw(const Eigen::MatrixXd& Hraw, Eigen::MatrixXd& Hs) const {
-  Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(num_params_, raw_size_);
-  for (int r = 0; r < raw_size_; ++r) rows.row(raw_to_param_[r]) += Hraw.row(r);
+  Hrows_.setZero(num_params_, raw_size_);
+  for (int r = 0; r < raw_size_; ++r) Hrows_.row(raw_to_param_[r]) += Hraw.row(r);
   Hs.setZero(num_params_, num_params_);
-  for (int r = 0; r < raw_size_; ++r) Hs.col(raw_to_param_[r]) += rows.col(r);
+  for (int r = 0; r < raw_size_; ++r) Hs.col(raw_to_param_[r]) += Hrows_.col(r);
 }
 
 Eigen::MatrixXd LmiProblem::basis_matrix(int param) const {

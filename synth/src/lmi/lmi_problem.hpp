@@ -119,7 +119,7 @@ class LmiProblem {
   Eigen::MatrixXd M0_;
   // raw → parameter map (each raw index maps to exactly one parameter with weight 1).
   std::vector<int> raw_to_param_;
-  mutable Eigen::MatrixXd Hraw_, Hsym_;  // workspace
+  mutable Eigen::MatrixXd Hraw_, Hsym_, Hrows_, fP1t_, P2t_;  // workspace (sized at the first call, then reused)
 };
 
 }  // namespace hinf::lmi
