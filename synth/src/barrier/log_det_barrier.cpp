@@ -98,6 +98,7 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   hess_.topLeftCorner(n_, n_).noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
   z_derivs_ = z;
   have_derivs_ = true;
+  hess_factored_ = false;
   return grad_phi_.allFinite() && hess_.allFinite();
 }
 
@@ -118,17 +119,25 @@ bool LogDetBarrier::newton_decrement2(const Eigen::VectorXd& z, double& lambda2)
   if (!gradient(z, g)) return false;
   // Near the end of the path the Hessian's condition number grows like t²; a
   // pivoted LDLᵀ still gives the decrement where a plain Cholesky may break down.
-  ldlt_.compute(hess_);
-  if (ldlt_.info() != Eigen::Success) return false;
+  if (!factor_hessian()) return false;
   lambda2 = g.dot(ldlt_.solve(g));
   return std::isfinite(lambda2) && lambda2 >= 0;
+}
+
+bool LogDetBarrier::factor_hessian() {
+  // hess_ changes only when derivatives() recomputes it (it has no t in it): the Newton
+  // decrement and the path tangent at the same point share one factorisation.
+  if (!hess_factored_) {
+    ldlt_.compute(hess_);
+    hess_factored_ = true;
+  }
+  return ldlt_.info() == Eigen::Success;
 }
 
 bool LogDetBarrier::path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) {
   if (!derivatives(z)) return false;
   const Eigen::VectorXd cz = objective_gradient();
-  ldlt_.compute(hess_);
-  if (ldlt_.info() != Eigen::Success) return false;
+  if (!factor_hessian()) return false;
   dz = -ldlt_.solve(cz);
   return dz.allFinite();
 }

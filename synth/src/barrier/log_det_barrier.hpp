@@ -44,6 +44,7 @@ class LogDetBarrier {
  private:
   bool factor(const Eigen::VectorXd& z);
   bool derivatives(const Eigen::VectorXd& z);
+  bool factor_hessian();  // ldlt_ of hess_ at the point of the last derivatives()
 
   const lmi::LmiProblem& lmi_;
   Eigen::VectorXd c_;
@@ -64,6 +65,7 @@ class LogDetBarrier {
   Eigen::MatrixXd hess_;       // ∇² of the barrier part
   Eigen::MatrixXd Hs_;         // workspace
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;  // of hess_ (Newton decrement, path tangent); reused storage
+  bool hess_factored_ = false;         // ldlt_ is of the current hess_
 };
 
 }  // namespace hinf::barrier
