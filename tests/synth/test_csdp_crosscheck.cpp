@@ -167,4 +167,44 @@ TEST(CsdpCrosscheck, RandomRobustlyStablePlants) {
   }
 }
 
+// A larger random plant (n = 10: an LMI of order 52, 262 variables), where the end of the
+// path runs on the QR Newton step: the certified gap meets relative_gap_tol, and the
+// certified bracket [γ² − gap, γ²] holds CSDP's optimum (margin-corrected as above) to
+// CSDP's own accuracy (its primal–dual gap, asserted ≤ 1e-7). The plant is balanced
+// (‖H‖₂ = 1, ‖E‖₂ = 0.2): on random_uncertain_plant's ‖H‖ = 30, ‖E‖ = 0.01 at n = 10 CSDP
+// stops "at the edge of primal feasibility" with both objectives 1e-6 above our
+// certified-feasible γ², no reference at this accuracy.
+TEST(CsdpCrosscheck, RandomN10CertifiedBracketHoldsCsdpOptimum) {
+  using hinf::test::random_matrix;
+  std::mt19937 g(20261127);
+  Plant P;
+  P.A = random_matrix(g, 10, 10);
+  P.A *= 0.7 / P.A.operatorNorm();
+  P.B = random_matrix(g, 10, 4);
+  P.C = random_matrix(g, 3, 10);
+  P.D = 0.3 * random_matrix(g, 3, 4);
+  P.L = random_matrix(g, 2, 10);
+  P.H = random_matrix(g, 10, 2);
+  P.H /= P.H.operatorNorm();
+  P.E = random_matrix(g, 2, 10);
+  P.E *= 0.2 / P.E.operatorNorm();  // ‖A‖ + ‖H‖‖E‖ = 0.9 < 1
+  CsdpResult r;
+  const double ref = csdp_gamma2(P, &r);
+  const double csdp_gap = std::abs(r.primal - r.dual) / std::abs(r.dual);
+  ASSERT_LE(csdp_gap, 1e-7) << "CSDP's own gap is too wide for a reference at this accuracy\n" << r.output;
+  const hinf::synth::Settings st;
+  const auto res = hinf::synth::synthesize(P, st);
+  const double corrected = ref + st.lmi_margin * r.trace_X;
+  const double lower = res.solver.dual_bound_gamma_squared;
+  std::printf("  n = 10 (LMI order %d, %d variables): ours γ² = %.12g, certified lower bound %.12g (relative gap %.2e); CSDP primal "
+              "%.12g dual %.12g (gap %.1e), tr X %.4g, dual + ε tr X = %.12g\n",
+              res.solver.lmi_order, res.solver.variables, res.gamma_squared, lower, res.solver.relative_gap,
+              r.primal, r.dual, csdp_gap, r.trace_X,
+              corrected);
+  EXPECT_LE(res.solver.relative_gap, st.relative_gap_tol);
+  EXPECT_LE(lower, corrected * (1 + csdp_gap + 1e-8));
+  EXPECT_GE(res.gamma_squared, corrected * (1 - csdp_gap - 1e-8));
+  EXPECT_TRUE(res.certificate.passed);
+}
+
 }  // namespace

@@ -380,6 +380,58 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   EXPECT_EQ((b.W() - b.W().transpose()).cwiseAbs().maxCoeff(), 0.0);
 }
 
+// The scaled Jacobian of the QR Newton step: GᵀG is the barrier Hessian tr(W Mᵢ W Mⱼ)
+// for W = TᵀT, and with first_row f the emitted rows plus the explicit Hessian of the
+// remaining rows of T, W_m = T[0:f]ᵀ T[0:f], make up the same matrix (the split that
+// LogDetBarrier::accurate_newton uses).
+TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
+  std::mt19937 g(23);
+  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const auto T1 = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
+  const LmiProblem& L = T1.lmi;
+  const int N = L.order(), np = L.num_params();
+  const MatrixXd T = rnd(g, N, N);
+  MatrixXd H;
+  L.hessian(T.transpose() * T, H);
+  MatrixXd G(N * (N + 1) / 2, np);
+  L.scaled_jacobian(T, G);
+  EXPECT_LT(rel_err(G.transpose() * G, H), 1e-12);
+  for (int f : {1, N / 2, N - 1}) {
+    MatrixXd Gf(LmiProblem::scaled_jacobian_rows(N, f), np), Hm;
+    L.scaled_jacobian(T, Gf, f);
+    L.hessian(T.topRows(f).transpose() * T.topRows(f), Hm);
+    EXPECT_LT(rel_err(Gf.transpose() * Gf + Hm, H), 1e-12) << "f = " << f;
+  }
+}
+
+// Where the explicit Hessian is well conditioned, the QR Newton step, its decrement and
+// the QR path tangent equal the explicit ones (independent: LDLᵀ of the assembled H).
+TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
+  std::mt19937 g(29);
+  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
+  const VectorXd c = T.lmi.cost_of(T.g);
+  hinf::synth::Settings st;
+  st.relative_gap_tol = 10.0;  // first phase-II centring: a well-conditioned point
+  const auto sol = hinf::barrier::minimize_linear(T.lmi, c, st);
+  hinf::barrier::LogDetBarrier b(T.lmi, c, st.lmi_margin, st.feasibility_radius, false);
+  b.set_t(3.0);
+  const VectorXd x = sol.x;
+  ASSERT_TRUE(b.inside(x));
+  VectorXd grad, dz_qr, tan_qr, tan_ex;
+  MatrixXd H;
+  double l2_qr = 0, l2_ex = 0;
+  ASSERT_TRUE(b.gradient(x, grad) && b.hessian(x, H));
+  ASSERT_TRUE(b.accurate_newton(x, dz_qr, l2_qr));
+  ASSERT_TRUE(b.newton_decrement2(x, l2_ex));
+  const VectorXd dz_ex = -H.ldlt().solve(grad);
+  EXPECT_LT((dz_qr - dz_ex).norm(), 1e-9 * dz_ex.norm());
+  EXPECT_NEAR(l2_qr, l2_ex, 1e-9 * l2_ex);
+  EXPECT_NEAR(l2_qr, -grad.dot(dz_ex), 1e-9 * l2_ex);
+  ASSERT_TRUE(b.accurate_path_tangent(x, tan_qr) && b.path_tangent(x, tan_ex));
+  EXPECT_LT((tan_qr - tan_ex).norm(), 1e-9 * tan_ex.norm());
+}
+
 // A phase-I point (x, s) of T: x = 0.3·N(0, 1) entries, s = max(0, λ_max(M(x))) + room, so
 // that −M(x) − εI + sI ≻ 0 with margin `room` (less ε).
 VectorXd phase1_point(const hinf::model::Theorem1Lmi& T, std::mt19937& g, double room) {

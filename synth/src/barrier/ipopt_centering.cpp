@@ -72,7 +72,7 @@ class CenteringTnlp : public Ipopt::TNLP {
     return true;
   }
   bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number, Number, Number, Number,
-                             Number, Number, Number, Number, Index, const Ipopt::IpoptData*,
+                             Number, Number, Number, Number alpha_pr, Index, const Ipopt::IpoptData*,
                              Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = iter;
     if (last_grad_z_.size() != n_) return true;
@@ -83,11 +83,26 @@ class CenteringTnlp : public Ipopt::TNLP {
     double l2 = 0;
     if (!barrier_.newton_decrement2(last_grad_z_, l2)) {
       ++indefinite_;
+      // The explicit Hessian has turned numerically indefinite: its round-off has reached
+      // its smallest eigenvalues, and Ipopt's steps are no longer Newton steps.
+      if (opt_.stop_on_inexact_newton) {
+        inexact_ = true;
+        return false;
+      }
     } else {
       if (l2 <= opt_.lambda2_tol) {
         centred_ = true;
         return false;
       }
+      // a full step from λ < 1/2 that broke the exact-Newton bound (CenteringOptions)
+      if (opt_.stop_on_inexact_newton && alpha_pr == 1.0 && prev_lambda2_ < 0.25) {
+        const double lp = std::sqrt(prev_lambda2_), bound = std::pow(lp / (1 - lp), 4);
+        if (l2 > 4 * bound) {
+          inexact_ = true;
+          return false;
+        }
+      }
+      prev_lambda2_ = l2;
       // Late on the path round-off sets a floor under λ² and Newton's iterates wander
       // around it: once λ² stops falling, accept the iterate with the smallest λ² if it is
       // well inside the quadratic region (≤ lambda2_accept); the caller's gap bound
@@ -132,6 +147,8 @@ class CenteringTnlp : public Ipopt::TNLP {
   double smallest_lambda2_ = std::numeric_limits<double>::infinity();  // and where
   Eigen::VectorXd smallest_z_;
   bool stalled_ = false;  // centred by the stall rule
+  bool inexact_ = false;  // stopped by stop_on_inexact_newton
+  double prev_lambda2_ = std::numeric_limits<double>::infinity();
   int best_iter_ = 0;
   int indefinite_ = 0;  // iterations where λ² could not be computed
 };
@@ -193,6 +210,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   r.z = tnlp->z_.size() == z0.size() ? tnlp->z_ : z0;
   if (tnlp->stalled_ && tnlp->smallest_z_.size() == z0.size()) r.z = tnlp->smallest_z_;
   r.stalled = tnlp->stalled_;
+  r.inexact = tnlp->inexact_;
   r.iterations = tnlp->iterations_;
   // λ² at the returned point itself (the gap bound of the caller depends on it)
   double l2 = std::numeric_limits<double>::infinity();
@@ -200,15 +218,15 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   r.centred = tnlp->centred_;
   r.stopped_early = tnlp->stopped_early_;
   switch (st) {
-    case Ipopt::Solve_Succeeded: r.ipopt_status = "solve_succeeded"; break;
-    case Ipopt::User_Requested_Stop: r.ipopt_status = "user_requested_stop"; break;
-    case Ipopt::Maximum_Iterations_Exceeded: r.ipopt_status = "maximum_iterations"; break;
-    case Ipopt::Maximum_CpuTime_Exceeded: r.ipopt_status = "maximum_cpu_time"; break;
-    case Ipopt::Search_Direction_Becomes_Too_Small: r.ipopt_status = "search_direction_too_small"; break;
-    case Ipopt::Restoration_Failed: r.ipopt_status = "restoration_failed"; break;
-    case Ipopt::Error_In_Step_Computation: r.ipopt_status = "error_in_step_computation"; break;
-    case Ipopt::Invalid_Number_Detected: r.ipopt_status = "invalid_number"; break;
-    default: r.ipopt_status = "ipopt_status_" + std::to_string(static_cast<int>(st)); break;
+    case Ipopt::Solve_Succeeded: r.status = "solve_succeeded"; break;
+    case Ipopt::User_Requested_Stop: r.status = "user_requested_stop"; break;
+    case Ipopt::Maximum_Iterations_Exceeded: r.status = "maximum_iterations"; break;
+    case Ipopt::Maximum_CpuTime_Exceeded: r.status = "maximum_cpu_time"; break;
+    case Ipopt::Search_Direction_Becomes_Too_Small: r.status = "search_direction_too_small"; break;
+    case Ipopt::Restoration_Failed: r.status = "restoration_failed"; break;
+    case Ipopt::Error_In_Step_Computation: r.status = "error_in_step_computation"; break;
+    case Ipopt::Invalid_Number_Detected: r.status = "invalid_number"; break;
+    default: r.status = "ipopt_status_" + std::to_string(static_cast<int>(st)); break;
   }
   // A successful Ipopt exit (its own tolerance met) also means centred.
   if (st == Ipopt::Solve_Succeeded || st == Ipopt::Solved_To_Acceptable_Level) r.centred = true;

@@ -4,6 +4,9 @@
 
 namespace hinf::barrier {
 
+// κ of the spectral split in factor_jacobian: round-off of the explicit part ε·κ² ≈ 2e-8.
+constexpr double kJacobianSplit = 1e4;
+
 LogDetBarrier::LogDetBarrier(const lmi::LmiProblem& lmi, Eigen::VectorXd c, double margin,
                              double radius, bool phase1, double phase1_weight)
     : lmi_(lmi), c_(std::move(c)), margin_(margin), radius_(radius), phase1_(phase1), eta_(phase1_weight),
@@ -139,6 +142,72 @@ bool LogDetBarrier::path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) 
   const Eigen::VectorXd cz = objective_gradient();
   if (!factor_hessian()) return false;
   dz = -ldlt_.solve(cz);
+  return dz.allFinite();
+}
+
+bool LogDetBarrier::factor_jacobian(const Eigen::VectorXd& z) {
+  if (phase1_ || !factor(z)) return false;
+  if (have_qr_ && same(z, z_qr_)) return true;
+  have_qr_ = false;
+  // Split the slack's spectrum, S = Q Λ Qᵀ: the p eigenvalues below λ_max/κ (the part of
+  // W = S⁻¹ above κ·w_min, which grows like t) and the rest. With T = Λ^{-1/2} Qᵀ
+  // (TᵀT = W), H = Σₖₗ (T Mᵢ Tᵀ)ₖₗ (T Mⱼ Tᵀ)ₖₗ splits into the pairs (k, l) that touch the
+  // first part — rows of the scaled Jacobian, taken into the QR — and the rest, H_mod =
+  // tr(W_m Mᵢ W_m Mⱼ) with W_m = Σ_{k∉p} q_k q_kᵀ/λ_k, formed explicitly: its round-off,
+  // ε·‖W_m‖², is within ε·κ² of its own smallest scale, so it is accurate, and it enters
+  // the QR as its factor F (FᵀF = H_mod, pivoted LDLᵀ). QR of [G_p; F] has RᵀR = H, with
+  // N·p rows instead of N(N+1)/2.
+  eig_.compute(slack_);
+  if (eig_.info() != Eigen::Success) return false;
+  const Eigen::VectorXd& lam = eig_.eigenvalues();  // ascending
+  if (!(lam(0) > 0)) return false;
+  int p = 0;
+  while (p < N_ && lam(p) < lam(N_ - 1) / kJacobianSplit) ++p;
+  const int f = N_ - p;  // rows of T from f on are the small-λ part
+  Tsc_.resize(N_, N_);
+  for (int j = 0; j < N_; ++j) {
+    const int k = j < f ? p + j : j - f;
+    Tsc_.row(j) = eig_.eigenvectors().col(k).transpose() / std::sqrt(lam(k));
+  }
+  const int mp = lmi::LmiProblem::scaled_jacobian_rows(N_, f);
+  G_.resize(mp + n_, n_);
+  lmi_.scaled_jacobian(Tsc_, G_, f);
+  // H_mod, plus the ball −log(ρ² − ‖x‖²): (2/r²)·I + (4/r⁴)·x xᵀ
+  Wm_.noalias() = Tsc_.topRows(f).transpose() * Tsc_.topRows(f);
+  lmi_.hessian(Wm_, Hmod_);
+  const auto x = z.head(n_);
+  const double r2 = radius_ * radius_ - x.squaredNorm();
+  Hmod_.diagonal().array() += 2.0 / r2;
+  Hmod_.noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
+  mod_ldlt_.compute(Hmod_);
+  if (mod_ldlt_.info() != Eigen::Success) return false;
+  // F = D^{1/2} Lᵀ P  (P H_mod Pᵀ = L D Lᵀ); Fᵀ = Pᵀ L D^{1/2}
+  Eigen::MatrixXd Ft = mod_ldlt_.matrixL();
+  Ft = Ft * mod_ldlt_.vectorD().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  Ft = mod_ldlt_.transpositionsP().transpose() * Ft;
+  G_.bottomRows(n_) = Ft.transpose();
+  if (!G_.allFinite()) return false;
+  // in place: only R (the top n rows' upper triangle) is needed, and no copy of G
+  Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(G_);
+  z_qr_ = z;
+  have_qr_ = true;
+  return true;
+}
+
+bool LogDetBarrier::accurate_newton(const Eigen::VectorXd& z, Eigen::VectorXd& dz, double& lambda2) {
+  Eigen::VectorXd g;
+  if (!gradient(z, g) || !factor_jacobian(z)) return false;
+  const auto R = G_.topRows(n_).triangularView<Eigen::Upper>();  // QR done in place
+  Eigen::VectorXd y = R.transpose().solve(g);  // Rᵀy = g
+  lambda2 = y.squaredNorm();
+  dz = -R.solve(y);
+  return dz.allFinite() && std::isfinite(lambda2);
+}
+
+bool LogDetBarrier::accurate_path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz) {
+  if (!factor_jacobian(z)) return false;
+  const auto R = G_.topRows(n_).triangularView<Eigen::Upper>();  // QR done in place
+  dz = -R.solve(R.transpose().solve(objective_gradient()));
   return dz.allFinite();
 }
 

@@ -32,6 +32,16 @@ class LogDetBarrier {
   // Central-path tangent dz/dt = −H⁻¹∇(linear objective) at z.
   bool path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
 
+  // The same Newton step, decrement and tangent without forming H (phase II only).
+  // H = GᵀG with G the scaled Jacobian (LmiProblem::scaled_jacobian, plus the ball's rows);
+  // with G = QR, H·dz = −∇f_t is RᵀR·dz = −∇f_t and λ² = ‖R⁻ᵀ∇f_t‖². The condition number
+  // of R is that of G, ~t, where the explicit H's is ~t²: late on the path (t ≳ 1e8 on
+  // random n = 10 plants) the explicit H's round-off, ε·‖H‖, exceeds its smallest
+  // eigenvalues and Newton on it stalls; on R it still converges quadratically. Costs a
+  // QR of an (N(N+1)/2 + n + 1) × n matrix, so it is used only where the explicit H fails.
+  bool accurate_newton(const Eigen::VectorXd& z, Eigen::VectorXd& dz, double& lambda2);
+  bool accurate_path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
+
   double linear_objective(const Eigen::VectorXd& z) const;
   // ∇ of the linear objective
   Eigen::VectorXd objective_gradient() const;
@@ -45,6 +55,7 @@ class LogDetBarrier {
   bool factor(const Eigen::VectorXd& z);
   bool derivatives(const Eigen::VectorXd& z);
   bool factor_hessian();  // ldlt_ of hess_ at the point of the last derivatives()
+  bool factor_jacobian(const Eigen::VectorXd& z);  // G_ and its QR at z
 
   const lmi::LmiProblem& lmi_;
   Eigen::VectorXd c_;
@@ -66,6 +77,12 @@ class LogDetBarrier {
   Eigen::MatrixXd Hs_;         // workspace
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;  // of hess_ (Newton decrement, path tangent); reused storage
   bool hess_factored_ = false;         // ldlt_ is of the current hess_
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig_;  // accurate_newton: of the slack
+  Eigen::MatrixXd Tsc_, Wm_, Hmod_;            // Λ^{-1/2}Qᵀ (reordered), W_m, H_mod
+  Eigen::MatrixXd G_;                          // [G_p; F], then its QR in place (R on top)
+  Eigen::LDLT<Eigen::MatrixXd> mod_ldlt_;      // of H_mod
+  Eigen::VectorXd z_qr_;                       // the point G_'s QR is of
+  bool have_qr_ = false;
 };
 
 }  // namespace hinf::barrier

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "barrier/damped_newton.hpp"
 #include "barrier/ipopt_centering.hpp"
 #include "barrier/log_det_barrier.hpp"
 
@@ -55,6 +56,16 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
     return false;
   };
 
+  // Gap bound at a point with Newton decrement λ < 1 (ν-self-concordant barrier):
+  //   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
+  // from cᵀx*(t) − c* ≤ ν/t, ‖x − x*(t)‖ₓ ≤ λ/(1 − λ) and t‖c‖*ₓ ≤ λ + √ν
+  // (Nesterov, Introductory Lectures on Convex Optimization, 2004, ch. 4: the local-norm
+  // distance to the minimiser of a self-concordant function, and ‖∇F‖*ₓ ≤ √ν).
+  auto gap_bound = [nu](double lambda2, double t) {
+    const double lam = std::sqrt(lambda2);
+    return lam < 1 ? (nu + (lam + std::sqrt(nu)) * lam / (1 - lam)) / t : INFINITY;
+  };
+
   // Runs one barrier (phase 1 or 2) along its central path. Returns the final z.
   auto follow = [&](LogDetBarrier& b, Eigen::VectorXd z, int phase, bool& ok) -> Eigen::VectorXd {
     ok = false;
@@ -75,6 +86,18 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
     int retries = 0;
     bool have_centred = false;
     bool last_stalled = false;
+    bool qr_mode = false;  // phase II past the explicit Hessian's round-off: QR Newton steps
+    bool last_gap_accurate = false;
+    // The gap bound at z for barrier parameter tz with λ² from the QR Newton step.
+    auto accurate_gap = [&](const Eigen::VectorXd& zc, double tz) {
+      const double t_now = b.t();
+      b.set_t(tz);
+      Eigen::VectorXd d;
+      double l2 = INFINITY;
+      const bool ok_qr = b.accurate_newton(zc, d, l2);
+      b.set_t(t_now);
+      return ok_qr ? gap_bound(l2, tz) : INFINITY;
+    };
     // The last centred gap, relative to |objective| there (phase II's tests below).
     auto last_relative_gap = [&] {
       return last_gap / std::max(std::abs(b.linear_objective(last_centred)), 1e-12);
@@ -95,19 +118,37 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
         co.max_iterations = std::min(co.max_iterations, co.give_up_iterations);
       co.max_cpu_time = remaining();
       co.phase1_stop_negative = (phase == 1);
-      const CenteringResult r = ipopt.run(b, z, co);
+      co.stop_on_inexact_newton = (phase == 2);
+      CenteringResult r;
+      if (phase == 2 && qr_mode) {
+        r = damped_newton_centre(b, z, co);
+      } else {
+        r = ipopt.run(b, z, co);
+        // Ipopt's steps stopped being Newton steps, or it stalled or failed, in phase II:
+        // the explicit Hessian's round-off (ε·‖H‖, ‖H‖ ~ t²) has reached its smallest
+        // eigenvalues. Finish this centring, and do all later ones, with the QR Newton
+        // step (damped_newton.hpp).
+        if (phase == 2 && (r.inexact || r.stalled || !r.centred)) {
+          CenteringOptions cq = co;
+          cq.max_iterations = std::max(1, co.max_iterations - r.iterations);
+          const CenteringResult q = damped_newton_centre(b, b.inside(r.z) ? r.z : z, cq);
+          if (q.centred) {
+            const int ipopt_iterations = r.iterations;
+            r = q;
+            r.iterations += ipopt_iterations;
+            qr_mode = true;
+          }
+        }
+      }
       sol.newton_total += r.iterations;
       if (phase == 1) sol.newton_phase1 += r.iterations;
       ++sol.centerings;
       z = r.z;
       const double obj = phase == 1 ? z(n) : b.linear_objective(z);
-      // Gap bound at a point with Newton decrement λ < 1 (ν-self-concordant barrier):
-      //   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
-      // from cᵀx*(t) − c* ≤ ν/t, ‖x − x*(t)‖ₓ ≤ λ/(1 − λ) and t‖c‖*ₓ ≤ λ + √ν
-      // (Nesterov, Introductory Lectures on Convex Optimization, 2004, ch. 4: the local-norm
-      // distance to the minimiser of a self-concordant function, and ‖∇F‖*ₓ ≤ √ν).
-      const double lam = std::sqrt(r.lambda2);
-      const double gap = lam < 1 ? (nu + (lam + std::sqrt(nu)) * lam / (1 - lam)) / t : INFINITY;
+      const double gap = gap_bound(r.lambda2, t);
+      // λ² of the QR Newton step is the trustworthy one (the explicit Hessian's may be off
+      // late on the path); a gap that ends phase II is always certified with it.
+      const bool gap_accurate = phase == 2 && qr_mode;
       if (observer)
         observer({synth::SolveStage::Synthesis, phase, k, t, obj, gap, r.iterations, r.lambda2, seconds_since(start)});
       if (phase == 1 && (r.stopped_early || obj < 0)) {
@@ -130,6 +171,10 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
           t = last_t * growth;
           continue;
         }
+        if (phase == 2 && have_centred && !last_gap_accurate) {
+          last_gap = accurate_gap(last_centred, last_t);
+          last_gap_accurate = true;
+        }
         if (phase == 2 && have_centred &&
             last_relative_gap() <= std::max(100 * settings.relative_gap_tol, 1e-5)) {
           sol.gap = last_gap;
@@ -140,7 +185,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
         if (out_of_budget(sol)) return z;
         sol.status = SolverStatus::NumericalError;
         sol.detail = "centring failed in phase " + std::to_string(phase) + " at t = " +
-                     std::to_string(t) + " (Ipopt: " + r.ipopt_status + ")";
+                     std::to_string(t) + " (" + (qr_mode ? "QR Newton: " : "Ipopt: ") + r.status + ")";
         return z;
       }
       if (phase == 1 && phase1_weight > 0 && obj - gap > 0) {
@@ -158,10 +203,21 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       last_stalled = r.stalled;
       last_centred = z;
       last_gap = gap;
+      last_gap_accurate = gap_accurate;
       last_t = t;
       have_centred = true;
       const double gap_goal = settings.relative_gap_tol * std::max(std::abs(obj), 1e-12);
       if (phase == 2 && gap <= gap_goal) {
+        if (!gap_accurate) {
+          // certify with the QR step's λ²; if that misses the goal, re-centre at this t
+          // with QR Newton steps from here on
+          sol.gap = last_gap = accurate_gap(z, t);
+          last_gap_accurate = true;
+          if (!(sol.gap <= gap_goal)) {
+            qr_mode = true;
+            continue;
+          }
+        }
         ok = true;
         return z;
       }
@@ -171,7 +227,7 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
       const double t_new =
           phase == 2 ? std::min(growth * t, std::max(2.0 * t, 1.5 * t * gap / gap_goal)) : growth * t;
       // predictor along the central path, kept inside the domain
-      if (b.path_tangent(z, dz)) {
+      if (qr_mode ? b.accurate_path_tangent(z, dz) : b.path_tangent(z, dz)) {
         double alpha = 1.0;
         // x*(t) − x* = O(1/t) on the central path: extrapolate linearly in 1/t, i.e.
         // Δx = (dx/d(1/t))·(1/t_new − 1/t) = t·(1 − t/t_new)·dx/dt.

@@ -1,5 +1,7 @@
 #include "lmi/lmi_problem.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -269,6 +271,36 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
   }
   Hsym_ = Hraw_ + Hraw_.transpose();
   contract_raw(Hsym_, Hs);
+}
+
+void LmiProblem::scaled_jacobian(const Eigen::MatrixXd& Linv, Eigen::MatrixXd& G, int first_row) const {
+  const int N = order_, f = first_row;
+  const double s2 = std::sqrt(2.0);
+  G.topRows(scaled_jacobian_rows(N, f)).setZero();
+  Eigen::MatrixXd U, V;
+  for (const Term& t : terms_) {
+    const Variable& v = variables_[t.var];
+    // U = L⁻¹[:, block r]·left (N×a),  V = L⁻¹[:, block c]·rightᵀ (N×b)
+    U.noalias() = Linv.middleCols(block_offsets_[t.r], block_sizes_[t.r]) * t.L.M;
+    V.noalias() = Linv.middleCols(block_offsets_[t.c], block_sizes_[t.c]) * t.R.M.transpose();
+    // Pairs (i, j) of the term's G entry and the parameter they move: a full/symmetric
+    // variable's entry (i, j); a scalar x·I_s moves all (k, k) together.
+    const bool scalar = v.shape == VarShape::Scalar;
+    const int npairs = scalar ? t.a : t.a * t.b;
+    for (int q = 0; q < npairs; ++q) {
+      const int i = scalar ? q : q % t.a, j = scalar ? q : q / t.a;
+      const int param = scalar ? v.offset : raw_to_param_[v.raw_offset + i + t.a * j];
+      const auto u = U.col(i);
+      const auto w = V.col(j);
+      double* g = G.col(param).data();
+      int k = 0;
+      for (int c = 0; c < N; ++c) {
+        if (c >= f) g[k++] += 2 * t.w * u(c) * w(c);
+        const double uc = s2 * t.w * u(c), wc = s2 * t.w * w(c);
+        for (int r = std::max(c + 1, f); r < N; ++r) g[k++] += uc * w(r) + wc * u(r);
+      }
+    }
+  }
 }
 
 void LmiProblem::contract_raw(const Eigen::MatrixXd& Hraw, Eigen::MatrixXd& Hs) const {
