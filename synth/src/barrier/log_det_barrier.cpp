@@ -97,12 +97,19 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   const auto x = z.head(n_);
   const double r2 = radius_ * radius_ - x.squaredNorm();
   grad_phi_.head(n_) += 2.0 / r2 * x;
-  hess_.topLeftCorner(n_, n_).diagonal().array() += 2.0 / r2;
-  hess_.topLeftCorner(n_, n_).noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
+  add_ball_hessian(x, hess_.topLeftCorner(n_, n_));
   z_derivs_ = z;
   have_derivs_ = true;
   hess_factored_ = false;
   return grad_phi_.allFinite() && hess_.allFinite();
+}
+
+void LogDetBarrier::add_ball_hessian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                     Eigen::Ref<Eigen::MatrixXd> H) const {
+  // ∇²(−log(ρ² − ‖x‖²)) = (2/r²)·I + (4/r⁴)·x xᵀ,  r² = ρ² − ‖x‖²
+  const double r2 = radius_ * radius_ - x.squaredNorm();
+  H.diagonal().array() += 2.0 / r2;
+  H.noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
 }
 
 bool LogDetBarrier::gradient(const Eigen::VectorXd& z, Eigen::VectorXd& g) {
@@ -172,13 +179,10 @@ bool LogDetBarrier::factor_jacobian(const Eigen::VectorXd& z) {
   const int mp = lmi::LmiProblem::scaled_jacobian_rows(N_, f);
   G_.resize(mp + n_, n_);
   lmi_.scaled_jacobian(Tsc_, G_, f);
-  // H_mod, plus the ball −log(ρ² − ‖x‖²): (2/r²)·I + (4/r⁴)·x xᵀ
+  // H_mod, plus the ball's Hessian
   Wm_.noalias() = Tsc_.topRows(f).transpose() * Tsc_.topRows(f);
   lmi_.hessian(Wm_, Hmod_);
-  const auto x = z.head(n_);
-  const double r2 = radius_ * radius_ - x.squaredNorm();
-  Hmod_.diagonal().array() += 2.0 / r2;
-  Hmod_.noalias() += (4.0 / (r2 * r2)) * x * x.transpose();
+  add_ball_hessian(z.head(n_), Hmod_);
   mod_ldlt_.compute(Hmod_);
   if (mod_ldlt_.info() != Eigen::Success) return false;
   // F = D^{1/2} Lᵀ P  (P H_mod Pᵀ = L D Lᵀ); Fᵀ = Pᵀ L D^{1/2}

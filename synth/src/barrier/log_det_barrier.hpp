@@ -33,12 +33,14 @@ class LogDetBarrier {
   bool path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
 
   // The same Newton step, decrement and tangent without forming H (phase II only).
-  // H = GᵀG with G the scaled Jacobian (LmiProblem::scaled_jacobian, plus the ball's rows);
-  // with G = QR, H·dz = −∇f_t is RᵀR·dz = −∇f_t and λ² = ‖R⁻ᵀ∇f_t‖². The condition number
-  // of R is that of G, ~t, where the explicit H's is ~t²: late on the path (t ≳ 1e8 on
+  // H = GᵀG with G = [rows of the scaled Jacobian (LmiProblem::scaled_jacobian) that touch
+  // the slack's p smallest eigenvalues; the factor of the rest of H, ball included]; with
+  // G = QR, H·dz = −∇f_t is RᵀR·dz = −∇f_t and λ² = ‖R⁻ᵀ∇f_t‖². The condition number of
+  // R is that of G, ~t, where the explicit H's is ~t²: late on the path (t ≳ 1e8 on
   // random n = 10 plants) the explicit H's round-off, ε·‖H‖, exceeds its smallest
   // eigenvalues and Newton on it stalls; on R it still converges quadratically. Costs a
-  // QR of an (N(N+1)/2 + n + 1) × n matrix, so it is used only where the explicit H fails.
+  // QR of a (p(N − p) + p(p + 1)/2 + n) × n matrix (factor_jacobian), so it is used only
+  // where the explicit H fails.
   bool accurate_newton(const Eigen::VectorXd& z, Eigen::VectorXd& dz, double& lambda2);
   bool accurate_path_tangent(const Eigen::VectorXd& z, Eigen::VectorXd& dz);
 
@@ -56,6 +58,8 @@ class LogDetBarrier {
   bool derivatives(const Eigen::VectorXd& z);
   bool factor_hessian();  // ldlt_ of hess_ at the point of the last derivatives()
   bool factor_jacobian(const Eigen::VectorXd& z);  // G_ and its QR at z
+  // H += the Hessian of the feasibility ball −log(ρ² − ‖x‖²) at x
+  void add_ball_hessian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::MatrixXd> H) const;
 
   const lmi::LmiProblem& lmi_;
   Eigen::VectorXd c_;

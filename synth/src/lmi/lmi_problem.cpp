@@ -273,16 +273,16 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
   contract_raw(Hsym_, Hs);
 }
 
-void LmiProblem::scaled_jacobian(const Eigen::MatrixXd& Linv, Eigen::MatrixXd& G, int first_row) const {
+void LmiProblem::scaled_jacobian(const Eigen::MatrixXd& T, Eigen::MatrixXd& G, int first_row) const {
   const int N = order_, f = first_row;
   const double s2 = std::sqrt(2.0);
   G.topRows(scaled_jacobian_rows(N, f)).setZero();
   Eigen::MatrixXd U, V;
   for (const Term& t : terms_) {
     const Variable& v = variables_[t.var];
-    // U = L⁻¹[:, block r]·left (N×a),  V = L⁻¹[:, block c]·rightᵀ (N×b)
-    U.noalias() = Linv.middleCols(block_offsets_[t.r], block_sizes_[t.r]) * t.L.M;
-    V.noalias() = Linv.middleCols(block_offsets_[t.c], block_sizes_[t.c]) * t.R.M.transpose();
+    // U = T[:, block r]·left (N×a),  V = T[:, block c]·rightᵀ (N×b)
+    U.noalias() = T.middleCols(block_offsets_[t.r], block_sizes_[t.r]) * t.L.M;
+    V.noalias() = T.middleCols(block_offsets_[t.c], block_sizes_[t.c]) * t.R.M.transpose();
     // Pairs (i, j) of the term's G entry and the parameter they move: a full/symmetric
     // variable's entry (i, j); a scalar x·I_s moves all (k, k) together.
     const bool scalar = v.shape == VarShape::Scalar;

@@ -77,16 +77,17 @@ class LmiProblem {
   void trace_products(const Eigen::MatrixXd& Y, Eigen::VectorXd& g) const;
   // Hs_ij = tr(W Mᵢ W Mⱼ) (full symmetric matrix; the barrier Hessian).
   void hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const;
-  // The scaled Jacobian of the barrier: column i = svec(L⁻¹ Mᵢ L⁻ᵀ) for Linv = L⁻¹ (the
-  // inverse Cholesky factor of the slack), svec the lower triangle column by column with
-  // off-diagonal entries ×√2, so that GᵀG is the barrier Hessian tr(W Mᵢ W Mⱼ), W = L⁻ᵀL⁻¹.
-  // With first_row = f > 0 only the entries (r, c), r ≥ c, with r ≥ f are emitted (rows
-  // of T = Linv past f span the part of the slack's inverse to be factored this way);
-  // they fill rows [0, f(N − f) + (N − f)(N − f + 1)/2) of G (num_params() columns). Each term contributes rank-2 updates w·(u vᵀ + v uᵀ), u = L⁻¹·left·eᵢ,
-  // v = L⁻¹·rightᵀ·eⱼ: the Mᵢ are never formed, and every column is built from the same
-  // L⁻¹, so a combination Σ dᵢ Mᵢ that nearly vanishes on the slack's near-null space
-  // keeps that property in G·d (what the QR Newton step of the barrier relies on).
-  void scaled_jacobian(const Eigen::MatrixXd& Linv, Eigen::MatrixXd& G, int first_row = 0) const;
+  // The scaled Jacobian of the barrier for any T with TᵀT = W (the inverse Cholesky factor
+  // of the slack, or Λ^{-1/2}Qᵀ from its eigendecomposition): column i = svec(T Mᵢ Tᵀ),
+  // svec the lower triangle column by column with off-diagonal entries ×√2, so that GᵀG
+  // is the barrier Hessian tr(W Mᵢ W Mⱼ). With first_row = f > 0 only the entries (r, c),
+  // r ≥ c, with r ≥ f are emitted (the pairs that touch rows f.. of T); they fill rows
+  // [0, scaled_jacobian_rows(N, f)) of G (num_params() columns). Each term contributes
+  // rank-2 updates w·(u vᵀ + v uᵀ), u = T·left·eᵢ, v = T·rightᵀ·eⱼ: the Mᵢ are never
+  // formed, and every column is built from the same T, so a combination Σ dᵢ Mᵢ that
+  // nearly vanishes on the slack's near-null space keeps that property in G·d (what the
+  // QR Newton step of the barrier relies on).
+  void scaled_jacobian(const Eigen::MatrixXd& T, Eigen::MatrixXd& G, int first_row = 0) const;
   static int scaled_jacobian_rows(int N, int first_row) {
     const int p = N - first_row;
     return first_row * p + p * (p + 1) / 2;
