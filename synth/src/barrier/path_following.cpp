@@ -137,6 +137,8 @@ SdpSolution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c
             r = q;
             r.iterations += ipopt_iterations;
             qr_mode = true;
+          } else {
+            r.iterations += q.iterations;  // its steps were taken, and count, even if not kept
           }
         }
       }
