@@ -10,9 +10,9 @@
 
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
-#include "hinf/runtime/models/cartesian_position.hpp"
-#include "hinf/runtime/models/hill.hpp"
-#include "hinf/runtime/models/range_azimuth_elevation.hpp"
+#include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/hill.hpp"
+#include "hinf/models/range_azimuth_elevation.hpp"
 #include "hinf/runtime/rekf.hpp"
 
 namespace {
@@ -95,8 +95,8 @@ void BM_PlainCLoop_6_3_6(benchmark::State& st) {
 }
 BENCHMARK(BM_PlainCLoop_6_3_6);
 
-models::HillModel::Gain paper_K() {
-  models::HillModel::Gain K;
+hinf::models::HillModel::Gain paper_K() {
+  hinf::models::HillModel::Gain K;
   K << -2.2541, -0.0071, -0.0072, -22.3975, 2.3256, 1.9369, -0.0104, -2.2493, -0.0055, 2.3259, -23.7456, 1.4544,
       -0.0072, -0.0055, -2.2471, 1.9357, 1.4552, -24.2818;
   return K;
@@ -112,8 +112,8 @@ Vec6 x0() { return (Vec6() << 630, 520, 1000, 0, 0, 0).finished(); }
 
 void BM_EkfStep_Hill_Cartesian(benchmark::State& st) {
   const Gains& G = gains();
-  const models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
-  Ekf<models::HillModel, models::CartesianPosition> ekf(hill, {}, paper_Q(), 0.01 * Eigen::Matrix3d::Identity());
+  const hinf::models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
+  Ekf<hinf::models::HillModel, hinf::models::CartesianPosition> ekf(hill, {}, paper_Q(), 0.01 * Eigen::Matrix3d::Identity());
   ekf.init(x0(), 100.0 * Mat6::Identity());
   const Eigen::Vector3d base(600, 550, 1040);
   int k = 0;
@@ -127,9 +127,9 @@ BENCHMARK(BM_EkfStep_Hill_Cartesian);
 
 void BM_EkfStep_Hill_RangeAzimuthElevation(benchmark::State& st) {
   const Gains& G = gains();
-  const models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
-  const models::RangeAzimuthElevation rae;
-  Ekf<models::HillModel, models::RangeAzimuthElevation> ekf(hill, rae, paper_Q(),
+  const hinf::models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
+  const hinf::models::RangeAzimuthElevation rae;
+  Ekf<hinf::models::HillModel, hinf::models::RangeAzimuthElevation> ekf(hill, rae, paper_Q(),
                                                             Eigen::Vector3d(0.01, 1e-8, 1e-8).asDiagonal());
   ekf.init(x0(), 100.0 * Mat6::Identity());
   const Eigen::Vector3d base = rae.h((Vec6() << 600, 550, 1040, 0, 0, 0).finished());
@@ -144,8 +144,8 @@ BENCHMARK(BM_EkfStep_Hill_RangeAzimuthElevation);
 
 void BM_RekfStep_Hill_Cartesian(benchmark::State& st) {
   const Gains& G = gains();
-  const models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
-  Rekf<models::HillModel, models::CartesianPosition> rekf(
+  const hinf::models::HillModel hill(7.2722e-5, 1000.0, 0.1, paper_K());
+  Rekf<hinf::models::HillModel, hinf::models::CartesianPosition> rekf(
       hill, {}, paper_Q(), 0.01 * Eigen::Matrix3d::Identity(), 100.0, 1e-3 * Mat6::Identity(),
       1e-3 * Eigen::Matrix3d::Identity(), 0.1 * Mat6::Identity());
   rekf.init(x0(), 100.0 * Mat6::Identity());

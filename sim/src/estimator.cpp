@@ -2,9 +2,9 @@
 
 #include <hinf/runtime/ekf.hpp>
 #include <hinf/runtime/lti_filter.hpp>
-#include <hinf/runtime/models/cartesian_position.hpp>
-#include <hinf/runtime/models/hill.hpp>
-#include <hinf/runtime/models/range_azimuth_elevation.hpp>
+#include <hinf/models/cartesian_position.hpp>
+#include <hinf/models/hill.hpp>
+#include <hinf/models/range_azimuth_elevation.hpp>
 #include <hinf/runtime/rekf.hpp>
 #include <hinf/synth/hill_model.hpp>
 
@@ -12,7 +12,6 @@ namespace hinf::sim {
 namespace {
 
 namespace rt = hinf::runtime;
-namespace models = hinf::runtime::models;
 
 class LtiEstimator final : public Estimator {
  public:
@@ -29,7 +28,7 @@ class LtiEstimator final : public Estimator {
   rt::LtiFilter filter_;
 };
 
-using HillEkf = rt::Ekf<models::HillModel, models::CartesianPosition>;
+using HillEkf = rt::Ekf<hinf::models::HillModel, hinf::models::CartesianPosition>;
 
 Eigen::Matrix<double, 6, 6> process_covariance(double sample_time, double acceleration_variance) {
   Eigen::Matrix<double, 6, 3> G;
@@ -42,8 +41,8 @@ class EkfEstimator final : public Estimator {
   EkfEstimator(const Scenario& s, const KalmanSettings& k)
       : settings_(k),
         sensor_(s.C_bl),
-        ekf_(models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time, models::Discretisation::ZeroOrderHold),
-             models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
+        ekf_(hinf::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time, hinf::models::Discretisation::ZeroOrderHold),
+             hinf::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
              Eigen::Matrix3d::Identity()) {
     ekf_.init(s.initial_estimate, Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal());
   }
@@ -67,7 +66,7 @@ class EkfEstimator final : public Estimator {
            settings_.r_floor * Eigen::Matrix3d::Identity();
   }
   KalmanSettings settings_;
-  models::RangeAzimuthElevation sensor_;
+  hinf::models::RangeAzimuthElevation sensor_;
   HillEkf ekf_;
 };
 
@@ -99,7 +98,7 @@ std::unique_ptr<Estimator> make_ekf_estimator(const Scenario& scenario, const Ka
 namespace hinf::sim {
 namespace {
 
-using HillRekf = hinf::runtime::Rekf<hinf::runtime::models::HillModel, hinf::runtime::models::CartesianPosition>;
+using HillRekf = hinf::runtime::Rekf<hinf::models::HillModel, hinf::models::CartesianPosition>;
 
 class RekfEstimator final : public Estimator {
  public:
@@ -136,13 +135,13 @@ class RekfEstimator final : public Estimator {
       const Eigen::Matrix<double, 6, 6> LPL = L * P0 * L.transpose();
       gamma = std::sqrt(2.0 * Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(LPL).eigenvalues().maxCoeff());
     }
-    return HillRekf(hinf::runtime::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time,
-                                                     hinf::runtime::models::Discretisation::ZeroOrderHold),
-                    hinf::runtime::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
+    return HillRekf(hinf::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time,
+                                                     hinf::models::Discretisation::ZeroOrderHold),
+                    hinf::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
                     Eigen::Matrix3d::Identity(), gamma, A_k, Eigen::Matrix3d::Zero(), L);
   }
   KalmanSettings settings_;
-  hinf::runtime::models::RangeAzimuthElevation sensor_;
+  hinf::models::RangeAzimuthElevation sensor_;
   HillRekf rekf_;
 };
 

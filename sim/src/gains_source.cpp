@@ -24,15 +24,7 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
     out.origin = "gains file " + source.gains_path;
     return out;
   }
-#if !HINF_SIM_SYNTHESIS
-  (void)verbose;
-  throw hinf::synth::Error(hinf::synth::ErrorCode::InvalidInput,
-                           "'synthesize: " + source.synthesize_path +
-                               "': this hinf-sim was built without on-the-fly synthesis (HINF_SIM_SYNTHESIS=OFF); "
-                               "use 'gains: FILE' from hinf-synth solve");
-#else
   auto config = hinf::synth::load_config(source.synthesize_path);
-  if (verbose) config.settings.verbose = true;
   if (verbose) std::cerr << "hinf-sim: synthesising from " << source.synthesize_path << " ...\n";
   const hinf::synth::SynthesisResult r = hinf::synth::synthesize(config.plant, config.settings);
   out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F};
@@ -41,7 +33,6 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
   out.gains_yaml = hinf::synth::format_gains_yaml(r, {source.synthesize_path, config.sha256});
   out.origin = "synthesised from " + source.synthesize_path;
   return out;
-#endif
 }
 
 }  // namespace hinf::sim

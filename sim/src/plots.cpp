@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "hinf/sim/atomic_file.hpp"
+#include "hinf/common/atomic_file.hpp"
 
 extern char** environ;
 
@@ -39,42 +39,25 @@ int run_gnuplot(const std::string& script) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-}  // namespace
-
-std::vector<std::string> write_plots(const std::string& dir, const Trajectory& tr, const std::string& title) {
-  namespace fs = std::filesystem;
-  const std::vector<std::string> names = {"position_error.png", "velocity_error.png", "thrust.png"};
-  const std::string data = temporary_path_for((fs::path(dir) / "plot.dat").string());
-  const std::string script = temporary_path_for((fs::path(dir) / "plot.gp").string());
-  std::vector<std::string> tmp_png;
-  for (const auto& n : names) tmp_png.push_back(temporary_path_for((fs::path(dir) / n).string()));
-  auto cleanup = [&]() {
-    std::remove(data.c_str());
-    std::remove(script.c_str());
-    for (const auto& p : tmp_png) std::remove(p.c_str());
-  };
-
-  // Data: t, thrust (3), then |e_p|, |e_v| per filter.
-  {
-    std::ostringstream os;
-    os.precision(9);
-    for (std::size_t k = 0; k < tr.t.size(); ++k) {
-      os << tr.t[k] << ' ' << tr.thrust[k](0) << ' ' << tr.thrust[k](1) << ' ' << tr.thrust[k](2);
-      for (const auto& f : tr.filters) {
-        const Vector6 e = f.estimate[k] - tr.truth[k];
-        if (e.allFinite()) os << ' ' << e.head<3>().norm() << ' ' << e.tail<3>().norm();
-        else os << " NaN NaN";
-      }
-      os << '\n';
+// Data: t, thrust (3), then |e_p|, |e_v| per filter.
+std::string plot_data(const Trajectory& tr) {
+  std::ostringstream os;
+  os.precision(9);
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    os << tr.t[k] << ' ' << tr.thrust[k](0) << ' ' << tr.thrust[k](1) << ' ' << tr.thrust[k](2);
+    for (const auto& f : tr.filters) {
+      const Vector6 e = f.estimate[k] - tr.truth[k];
+      if (e.allFinite()) os << ' ' << e.head<3>().norm() << ' ' << e.tail<3>().norm();
+      else os << " NaN NaN";
     }
-    try {
-      write_file_atomic(data, os.str());
-    } catch (const OutputError& e) {
-      cleanup();
-      throw PlotError(std::string("plot data: ") + e.what());
-    }
+    os << '\n';
   }
+  return os.str();
+}
 
+// The gnuplot script drawing `data` into png[0..2] (position error, velocity error, thrust).
+std::string plot_script(const Trajectory& tr, const std::string& title, const std::string& data,
+                        const std::vector<std::string>& png) {
   std::ostringstream gp;
   gp << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\n"
      << "set grid\nset key outside right top\nset xlabel 'time (s)'\n"
@@ -84,8 +67,8 @@ std::vector<std::string> write_plots(const std::string& dir, const Trajectory& t
   for (const char* name : {"published", "hinf", "ekf_no_control", "ekf", "rekf"})
     for (std::size_t f = 0; f < tr.filters.size(); ++f)
       if (tr.filters[f].name == name) order.push_back(f);
-  auto error_plot = [&](int which, const std::string& png, const std::string& ylabel, const std::string& what) {
-    gp << "set output " << quoted(png) << "\nset logscale y\nset format y '10^{%L}'\n"
+  auto error_plot = [&](int which, const std::string& out, const std::string& ylabel, const std::string& what) {
+    gp << "set output " << quoted(out) << "\nset logscale y\nset format y '10^{%L}'\n"
        << "set ylabel " << quoted(ylabel) << "\nset title " << quoted(title + ": " + what) << " noenhanced\n"
        << "plot ";
     for (std::size_t i = 0; i < order.size(); ++i) {
@@ -96,35 +79,36 @@ std::vector<std::string> write_plots(const std::string& dir, const Trajectory& t
     }
     gp << "\nunset logscale y\nset format y '%g'\n";
   };
-  error_plot(0, tmp_png[0], "position error |r̂ − r| (m)", "position error");
-  error_plot(1, tmp_png[1], "velocity error |v̂ − v| (m/s)", "velocity error");
-  gp << "set output " << quoted(tmp_png[2]) << "\nset ylabel 'thrust (N)'\nset title "
+  error_plot(0, png[0], "position error |r̂ − r| (m)", "position error");
+  error_plot(1, png[1], "velocity error |v̂ − v| (m/s)", "velocity error");
+  gp << "set output " << quoted(png[2]) << "\nset ylabel 'thrust (N)'\nset title "
      << quoted(title + ": thrust u = K x") << " noenhanced\n"
      << "plot " << quoted(data) << " using 1:2 with lines lw 1.5 title 'F_x', " << quoted(data)
      << " using 1:3 with lines lw 1.5 title 'F_y', " << quoted(data) << " using 1:4 with lines lw 1.5 title 'F_z'\n"
      << "set output\n";
-  try {
-    write_file_atomic(script, gp.str());
-  } catch (const OutputError& e) {
-    cleanup();
-    throw PlotError(std::string("plot script: ") + e.what());
-  }
+  return gp.str();
+}
+
+}  // namespace
+
+std::vector<std::string> write_plots(const std::string& dir, const Trajectory& tr, const std::string& title,
+                                     AtomicFileSet& outputs) {
+  namespace fs = std::filesystem;
+  const std::vector<std::string> names = {"position_error.png", "velocity_error.png", "thrust.png"};
+  std::vector<std::string> png;
+  for (const auto& n : names) png.push_back(outputs.reserve((fs::path(dir) / n).string()));
+  AtomicFileSet scratch;  // never committed: removed on return
+  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(tr));
+  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(tr, title, data, png));
   const int rc = run_gnuplot(script);
-  if (rc != 0) {
-    cleanup();
+  if (rc != 0)
     throw PlotError(rc < 0 ? "cannot run gnuplot (is the gnuplot package installed?); use --no-plots to skip plots"
                            : "gnuplot failed with exit status " + std::to_string(rc));
-  }
   for (std::size_t i = 0; i < names.size(); ++i) {
     std::error_code ec;
-    if (!fs::exists(tmp_png[i], ec) || fs::file_size(tmp_png[i], ec) == 0) {
-      cleanup();
+    if (!fs::exists(png[i], ec) || fs::file_size(png[i], ec) == 0)
       throw PlotError("gnuplot produced no output for " + names[i]);
-    }
   }
-  for (std::size_t i = 0; i < names.size(); ++i) commit_file(tmp_png[i], (fs::path(dir) / names[i]).string());
-  std::remove(data.c_str());
-  std::remove(script.c_str());
   return names;
 }
 

@@ -1,6 +1,6 @@
 #include "hinf/sim/run.hpp"
 
-#include <hinf/runtime/models/range_azimuth_elevation.hpp>
+#include <hinf/models/range_azimuth_elevation.hpp>
 
 #include <cmath>
 #include <limits>
@@ -28,7 +28,7 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
 
   // Truth: the exact two-body relative motion about a target whose rate is ω₀(1+δ).
   const RelativeTwoBody truth_model(s.mu, s.orbital_rate * (1.0 + s.truth_delta));
-  const hinf::runtime::models::RangeAzimuthElevation sensor(s.C_bl);
+  const hinf::models::RangeAzimuthElevation sensor(s.C_bl);
 
   NoiseChannel process[3] = {NoiseChannel(s.process_noise, T, steps, derive_seed(run_seed, kProcessX)),
                              NoiseChannel(s.process_noise, T, steps, derive_seed(run_seed, kProcessY)),

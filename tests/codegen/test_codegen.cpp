@@ -16,13 +16,13 @@
 #include "codegen_test_support.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
-#include "hinf/synth/codegen.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/codegen/codegen.hpp"
+#include "hinf/common/error.hpp"
 
 namespace {
 
 using hinf::runtime_yaml::GainsFile;
-using hinf::synth::CodegenOptions;
+using hinf::codegen::CodegenOptions;
 using hinf::test::TempDir;
 using Real = CodegenOptions::Real;
 
@@ -271,7 +271,7 @@ TEST(CodegenCompiled, CheckDriverDetectsAPerturbedCoefficient) {
     CodegenOptions opt;
     opt.prefix = "pert";
     opt.real = real;
-    auto files = hinf::synth::generate_c(paper_gains(), opt);
+    auto files = hinf::codegen::generate_c(paper_gains(), opt);
     // Perturb A_F(0,0) = -0.6126 by 1e-5 relative (below the paper's printed precision).
     std::string& src = files.files[1].contents;
     const std::string old = is_float ? "-0.612600029f" : "-0.61260000000000003";
@@ -279,7 +279,7 @@ TEST(CodegenCompiled, CheckDriverDetectsAPerturbedCoefficient) {
     const auto pos = src.find(old);
     ASSERT_NE(pos, std::string::npos) << src.substr(0, 800);
     src.replace(pos, old.size(), pert);
-    hinf::synth::write_generated_files(files, dir.path());
+    hinf::codegen::write_generated_files(files, dir.path());
     const std::string exe = dir / "pert_check";
     auto c = hinf::test::run(std::string(HINF_TEST_GCC) + " -std=c99 -O2 " + (dir / "pert.c") +
                              " " + (dir / "pert_check.c") + " -o " + exe);
@@ -297,7 +297,7 @@ TEST(CodegenCompiled, CppcheckClean) {
     CodegenOptions opt;
     opt.prefix = "cc";
     opt.real = real;
-    hinf::synth::write_generated_files(hinf::synth::generate_c(paper_gains(), opt), dir.path());
+    hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), opt), dir.path());
     const auto c = hinf::test::run(
         std::string(HINF_TEST_CPPCHECK) +
         " --enable=warning,style,performance,portability --error-exitcode=1 --std=c99 -q "
@@ -314,9 +314,9 @@ TEST(CodegenCompiled, TwoFiltersLinkIntoOneBinary) {
   CodegenOptions b;
   b.prefix = "nav_b";
   b.real = Real::Float;
-  hinf::synth::write_generated_files(hinf::synth::generate_c(paper_gains(), a), dir.path());
-  hinf::synth::write_generated_files(
-      hinf::synth::generate_c(hinf::test::random_gains(3, 5, 2, 3), b), dir.path());
+  hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), a), dir.path());
+  hinf::codegen::write_generated_files(
+      hinf::codegen::generate_c(hinf::test::random_gains(3, 5, 2, 3), b), dir.path());
   hinf::test::write_text(dir / "main.c",
                          "#include <stdio.h>\n#include \"nav_a.h\"\n#include \"nav_b.h\"\n"
                          "int main(void)\n{\n"
@@ -355,8 +355,8 @@ TEST(CodegenOutput, ByteIdenticalForTheSameInput) {
     CodegenOptions opt;
     opt.prefix = "nav";
     opt.real = real;
-    const auto first = hinf::synth::generate_c(g, opt);
-    const auto second = hinf::synth::generate_c(g, opt);
+    const auto first = hinf::codegen::generate_c(g, opt);
+    const auto second = hinf::codegen::generate_c(g, opt);
     ASSERT_EQ(first.files.size(), 4u);
     ASSERT_EQ(second.files.size(), 4u);
     for (std::size_t i = 0; i < first.files.size(); ++i) {
@@ -378,7 +378,7 @@ TEST(CodegenOutput, FileNamesProvenanceAndGuards) {
   CodegenOptions opt;
   opt.prefix = "MyFilt";
   opt.generator = "hinf-synth 9.9.9";
-  const auto out = hinf::synth::generate_c(g, opt);
+  const auto out = hinf::codegen::generate_c(g, opt);
   ASSERT_EQ(out.files.size(), 4u);
   EXPECT_EQ(out.files[0].name, "MyFilt.h");
   EXPECT_EQ(out.files[1].name, "MyFilt.c");
@@ -404,7 +404,7 @@ TEST(CodegenOutput, FileNamesProvenanceAndGuards) {
     EXPECT_EQ(c.find(banned), std::string::npos) << banned;
   // Hostile text from a gains file cannot end the provenance comment.
   g.tool = "evil */ int x; /*";
-  const auto evil = hinf::synth::generate_c(g, opt);
+  const auto evil = hinf::codegen::generate_c(g, opt);
   EXPECT_EQ(evil.files[0].contents.find("*/ int x;"), std::string::npos);
 }
 
@@ -412,7 +412,7 @@ TEST(CodegenOutput, FloatCodeHasNoDoubleAnywhere) {
   CodegenOptions opt;
   opt.prefix = "f";
   opt.real = Real::Float;
-  const auto out = hinf::synth::generate_c(paper_gains(), opt);
+  const auto out = hinf::codegen::generate_c(paper_gains(), opt);
   // Outside comments, the filter and its vectors never mention double.
   const std::regex comment(R"(/\*[\s\S]*?\*/)");
   for (std::size_t i = 0; i < 3; ++i) {
@@ -440,7 +440,7 @@ TEST(CodegenOutput, CoefficientsRoundTripExactly) {
     CodegenOptions opt;
     opt.prefix = "rt";
     opt.real = real;
-    const std::string c = hinf::synth::generate_c(g, opt).files[1].contents;
+    const std::string c = hinf::codegen::generate_c(g, opt).files[1].contents;
     const auto begin = c.find("rt_A_F[RT_NX][RT_NX] = {");
     const auto end = c.find("};", begin);
     ASSERT_NE(begin, std::string::npos);
@@ -466,7 +466,7 @@ TEST(CodegenOutput, CoefficientsRoundTripExactly) {
 TEST(CodegenPrefix, AcceptsOrdinaryIdentifiers) {
   for (const char* p : {"nav", "NavFilter", "hinf_chaser_1", "f", "x9", "e_1", "is", "sig_1",
                         "pri", "Int8", "a_prefix_of_22_chars_x"})
-    EXPECT_NO_THROW(hinf::synth::validate_codegen_prefix(p)) << p;
+    EXPECT_NO_THROW(hinf::codegen::validate_codegen_prefix(p)) << p;
 }
 
 TEST(CodegenPrefix, RefusesInvalidAndReservedNames) {
@@ -495,10 +495,10 @@ TEST(CodegenPrefix, RefusesInvalidAndReservedNames) {
       {"a_very_long_prefix_name_x", "too long"}};
   for (const auto& [prefix, why] : bad) {
     try {
-      hinf::synth::validate_codegen_prefix(prefix);
+      hinf::codegen::validate_codegen_prefix(prefix);
       ADD_FAILURE() << "accepted '" << prefix << "'";
-    } catch (const hinf::synth::Error& e) {
-      EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+    } catch (const hinf::Error& e) {
+      EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << prefix << ": " << e.what();
       EXPECT_NE(std::string(e.what()).find("--prefix"), std::string::npos) << e.what();
     }
@@ -509,31 +509,31 @@ TEST(CodegenWrite, FailureLeavesNothingBehind) {
   TempDir dir;
   CodegenOptions opt;
   opt.prefix = "nav";
-  const auto files = hinf::synth::generate_c(paper_gains(), opt);
+  const auto files = hinf::codegen::generate_c(paper_gains(), opt);
   // nav.c is a directory: nav.h is renamed first, then the rename of nav.c fails;
   // everything must be rolled back, leaving only the obstacle.
   const std::string out = dir / "out";
   std::filesystem::create_directories(out + "/nav.c");
   try {
-    hinf::synth::write_generated_files(files, out);
+    hinf::codegen::write_generated_files(files, out);
     ADD_FAILURE() << "writing over a directory succeeded";
-  } catch (const hinf::synth::Error& e) {
-    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
     EXPECT_NE(std::string(e.what()).find("nav.c"), std::string::npos) << e.what();
   }
   EXPECT_EQ(hinf::test::list_dir(out), "nav.c");
   // A directory that cannot be created (its parent is a file): nothing created.
   hinf::test::write_text(dir / "file", "x");
-  EXPECT_THROW(hinf::synth::write_generated_files(files, dir / "file/sub/dir"),
-               hinf::synth::Error);
+  EXPECT_THROW(hinf::codegen::write_generated_files(files, dir / "file/sub/dir"),
+               hinf::Error);
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "file out");
   // A failure after the directory was created removes the directory again.
-  hinf::synth::GeneratedFiles bad = files;
+  hinf::codegen::GeneratedFiles bad = files;
   bad.files.push_back({"sub/evil.c", "x"});
-  EXPECT_THROW(hinf::synth::write_generated_files(bad, dir / "fresh/nested"), hinf::synth::Error);
+  EXPECT_THROW(hinf::codegen::write_generated_files(bad, dir / "fresh/nested"), hinf::Error);
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "file out");
   // Success into a new nested directory.
-  hinf::synth::write_generated_files(files, dir / "new/nested");
+  hinf::codegen::write_generated_files(files, dir / "new/nested");
   EXPECT_EQ(hinf::test::list_dir(dir / "new/nested"), "nav.c nav.h nav_check.c nav_vectors.h");
 }
 
@@ -544,15 +544,15 @@ TEST(CodegenInput, RejectsNonFiniteAndOverflowingCoefficients) {
   g.B_F(2, 0) = 1e300;
   opt.real = Real::Float;
   try {
-    hinf::synth::generate_c(g, opt);
+    hinf::codegen::generate_c(g, opt);
     ADD_FAILURE() << "1e300 accepted for float";
-  } catch (const hinf::synth::Error& e) {
-    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
     EXPECT_NE(std::string(e.what()).find("filter.B_F(2,0)"), std::string::npos) << e.what();
   }
   g.B_F(2, 0) = std::numeric_limits<double>::quiet_NaN();
   opt.real = Real::Double;
-  EXPECT_THROW(hinf::synth::generate_c(g, opt), hinf::synth::Error);
+  EXPECT_THROW(hinf::codegen::generate_c(g, opt), hinf::Error);
 }
 
 }  // namespace

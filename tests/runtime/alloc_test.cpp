@@ -12,9 +12,9 @@
 
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
-#include "hinf/runtime/models/cartesian_position.hpp"
-#include "hinf/runtime/models/hill.hpp"
-#include "hinf/runtime/models/range_azimuth_elevation.hpp"
+#include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/hill.hpp"
+#include "hinf/models/range_azimuth_elevation.hpp"
 #include "hinf/runtime/rekf.hpp"
 
 namespace {
@@ -145,10 +145,10 @@ TEST(Allocations, FixedLtiFilterStepDoesNotAllocate) {
 
 TEST(Allocations, EkfAndRekfStepsDoNotAllocate) {
   using namespace hinf::runtime;
-  using models::CartesianPosition;
-  using models::HillModel;
-  using models::RangeAzimuthElevation;
-  const HillModel hill(7.2722e-5, 1000.0, 0.1, models::Discretisation::ZeroOrderHold);
+  using hinf::models::CartesianPosition;
+  using hinf::models::HillModel;
+  using hinf::models::RangeAzimuthElevation;
+  const HillModel hill(7.2722e-5, 1000.0, 0.1, hinf::models::Discretisation::ZeroOrderHold);
   Eigen::Matrix<double, 6, 1> x0;
   x0 << 600, 550, 1040, 0.02, -0.08, 0.03;
   const Eigen::Matrix<double, 6, 6> Q = 1e-6 * Eigen::Matrix<double, 6, 6>::Identity();

@@ -7,17 +7,17 @@
 #include <random>
 
 #include "hinf/runtime/ekf.hpp"
-#include "hinf/runtime/models/cartesian_position.hpp"
-#include "hinf/runtime/models/hill.hpp"
-#include "hinf/runtime/models/linear.hpp"
-#include "hinf/runtime/models/range_azimuth_elevation.hpp"
+#include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/hill.hpp"
+#include "hinf/models/linear.hpp"
+#include "hinf/models/range_azimuth_elevation.hpp"
 
 using namespace hinf::runtime;
-using models::CartesianPosition;
-using models::HillModel;
-using models::LinearMeasurement;
-using models::LinearModel;
-using models::RangeAzimuthElevation;
+using hinf::models::CartesianPosition;
+using hinf::models::HillModel;
+using hinf::models::LinearMeasurement;
+using hinf::models::LinearModel;
+using hinf::models::RangeAzimuthElevation;
 
 namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
@@ -147,7 +147,7 @@ TEST(Ekf, NisIsChiSquareOnAConsistentLinearProblem) {
   // Truth simulated with the filter's own Q and R: NIS ~ chi^2(3), mean 3.
   std::mt19937 g(77);
   const double T = 1.0;
-  const HillModel hill(1.1e-3, 1000.0, T, models::Discretisation::ZeroOrderHold);
+  const HillModel hill(1.1e-3, 1000.0, T, hinf::models::Discretisation::ZeroOrderHold);
   const Mat6 Q = 1e-4 * Mat6::Identity();
   const Eigen::Matrix3d R = 0.25 * Eigen::Matrix3d::Identity();
   const Eigen::LLT<Mat6> Qc(Q);
@@ -173,7 +173,7 @@ TEST(Ekf, NisIsChiSquareOnAConsistentLinearProblem) {
 
 TEST(Ekf, RangeAzimuthElevationTracksTruth) {
   std::mt19937 g(31);
-  const HillModel hill(7.2722e-5, 1000.0, 1.0, models::Discretisation::ZeroOrderHold);
+  const HillModel hill(7.2722e-5, 1000.0, 1.0, hinf::models::Discretisation::ZeroOrderHold);
   const RangeAzimuthElevation rae;
   const Eigen::Vector3d sig(0.1, 1e-4, 1e-4);
   Ekf<HillModel, RangeAzimuthElevation> ekf(hill, rae, 1e-10 * Mat6::Identity(),

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include "hinf/runtime/models/hill.hpp"
+#include "hinf/models/hill.hpp"
 
-using hinf::runtime::models::Discretisation;
-using hinf::runtime::models::HillModel;
+using hinf::models::Discretisation;
+using hinf::models::HillModel;
 using State = HillModel::State;
 using Input = HillModel::Input;
 

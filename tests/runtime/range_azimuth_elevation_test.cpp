@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "hinf/runtime/models/range_azimuth_elevation.hpp"
+#include "hinf/models/range_azimuth_elevation.hpp"
 
-using hinf::runtime::models::RangeAzimuthElevation;
+using hinf::models::RangeAzimuthElevation;
 using State = RangeAzimuthElevation::State;
 using Vec = RangeAzimuthElevation::Vector;
 

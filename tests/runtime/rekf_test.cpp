@@ -6,13 +6,13 @@
 #include <random>
 
 #include "hinf/runtime/ekf.hpp"
-#include "hinf/runtime/models/cartesian_position.hpp"
-#include "hinf/runtime/models/hill.hpp"
+#include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/hill.hpp"
 #include "hinf/runtime/rekf.hpp"
 
 using namespace hinf::runtime;
-using models::CartesianPosition;
-using models::HillModel;
+using hinf::models::CartesianPosition;
+using hinf::models::HillModel;
 
 namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
@@ -66,7 +66,7 @@ TEST(Rekf, ZeroUncertaintyEqualsJosephEkf) {
 
 TEST(Rekf, MatchesSpecFormulasWithExplicitInverses) {
   std::mt19937 g(321);
-  const HillModel hill(1.1e-3, 1000.0, 1.0, models::Discretisation::ZeroOrderHold);
+  const HillModel hill(1.1e-3, 1000.0, 1.0, hinf::models::Discretisation::ZeroOrderHold);
   const Mat6 F = hill.A();
   const auto H = CartesianPosition{}.C();
   const Eigen::Matrix3d R = 0.04 * Eigen::Matrix3d::Identity();

@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "hinf/synth/plant.hpp"
+#include "hinf/models/plant.hpp"
 
 namespace hinf::test {
 
@@ -20,10 +20,10 @@ inline Eigen::MatrixXd random_matrix(std::mt19937& g, int r, int c) {
 // Uncertain plant of order n with A + H F E Schur for every ‖F‖ ≤ 1: ‖A‖₂ = 0.6 and
 // ‖H‖₂‖E‖₂ = 0.3, so ‖A + HFE‖₂ ≤ 0.9. H and E are deliberately unbalanced (‖H‖ = 30,
 // ‖E‖ = 0.01); the other dimensions are drawn from 1..3.
-inline synth::Plant random_uncertain_plant(std::mt19937& g, int n) {
+inline hinf::Plant random_uncertain_plant(std::mt19937& g, int n) {
   std::uniform_int_distribution<int> dim(1, 3);
   const int p = dim(g), m = dim(g), q = dim(g), l = dim(g), j = dim(g), k = dim(g);
-  synth::Plant P;
+  hinf::Plant P;
   P.A = random_matrix(g, n, n);
   P.A *= 0.6 / P.A.operatorNorm();
   P.B = random_matrix(g, n, p);
@@ -39,8 +39,8 @@ inline synth::Plant random_uncertain_plant(std::mt19937& g, int n) {
 
 // A filter of the plant's dimensions with ‖A_F‖₂ = 0.5 (so the error system of a
 // robustly stable plant is robustly stable) — not an optimal one.
-inline synth::Filter random_stable_filter(std::mt19937& g, const synth::Plant& P) {
-  synth::Filter F;
+inline hinf::Filter random_stable_filter(std::mt19937& g, const hinf::Plant& P) {
+  hinf::Filter F;
   F.A_F = random_matrix(g, P.n(), P.n());
   F.A_F *= 0.5 / F.A_F.operatorNorm();
   F.B_F = random_matrix(g, P.n(), P.m());

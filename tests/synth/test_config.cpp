@@ -10,16 +10,16 @@
 #include <sstream>
 #include <string>
 
-#include "config/did_you_mean.hpp"
-#include "config/sha256.hpp"
-#include "core/number_text.hpp"
+#include "hinf/common/suggest.hpp"
+#include "hinf/common/sha256.hpp"
+#include "hinf/common/number_text.hpp"
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
 
 namespace {
 
-using hinf::synth::Error;
-using hinf::synth::ErrorCode;
+using hinf::Error;
+using hinf::ErrorCode;
 using hinf::synth::parse_config;
 
 const std::string kSource = std::string(HINF_SOURCE_DIR);
@@ -92,7 +92,7 @@ TEST(Config, BaseSystemConfigParses) {
   EXPECT_EQ(cfg.plant.A(0, 1), 0.1);
   EXPECT_EQ(cfg.plant.A(1, 0), 0.0);
   EXPECT_EQ(cfg.path, "ok.yaml");
-  EXPECT_EQ(cfg.sha256, hinf::synth::sha256_hex(kSystem));
+  EXPECT_EQ(cfg.sha256, hinf::sha256_hex(kSystem));
 }
 
 TEST(Config, ExampleMatricesConfigIsRobustlySchurStable) {
@@ -156,7 +156,7 @@ TEST(Config, Sha256IsOfTheExactFileBytes) {
   const std::string path = kSource + "/configs/paper-dbar0.05.yaml";
   const auto cfg = hinf::synth::load_config(path);
   EXPECT_EQ(cfg.path, path);
-  EXPECT_EQ(cfg.sha256, hinf::synth::sha256_hex(read_bytes(path)));
+  EXPECT_EQ(cfg.sha256, hinf::sha256_hex(read_bytes(path)));
   EXPECT_EQ(cfg.sha256.size(), 64u);
   // a comment changes the bytes, hence the hash, not the plant
   const auto other = parse_config(read_bytes(path) + "# comment\n", "x.yaml");
@@ -166,7 +166,7 @@ TEST(Config, Sha256IsOfTheExactFileBytes) {
 
 // FIPS 180-4 / NIST example vectors.
 TEST(NumberText, ShortestRoundTripTextWithoutNeedlessExponents) {
-  using hinf::synth::number_text;
+  using hinf::number_text;
   EXPECT_EQ(number_text(10), "10");
   EXPECT_EQ(number_text(-5), "-5");
   EXPECT_EQ(number_text(0.1), "0.1");
@@ -181,7 +181,7 @@ TEST(NumberText, ShortestRoundTripTextWithoutNeedlessExponents) {
 }
 
 TEST(Sha256, FipsTestVectors) {
-  using hinf::synth::sha256_hex;
+  using hinf::sha256_hex;
   EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
   EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
@@ -191,8 +191,8 @@ TEST(Sha256, FipsTestVectors) {
 }
 
 TEST(DidYouMean, EditDistanceAndSuggestions) {
-  using hinf::synth::closest_match;
-  using hinf::synth::edit_distance;
+  using hinf::closest_match;
+  using hinf::edit_distance;
   EXPECT_EQ(edit_distance("sampel_time", "sample_time"), 1);  // one transposition
   EXPECT_EQ(edit_distance("kitten", "sitting"), 3);
   EXPECT_EQ(edit_distance("", "abc"), 3);

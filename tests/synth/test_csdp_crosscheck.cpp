@@ -30,7 +30,7 @@
 namespace {
 
 using Eigen::MatrixXd;
-using hinf::synth::Plant;
+using hinf::Plant;
 
 struct CsdpResult {
   int rc = -1;

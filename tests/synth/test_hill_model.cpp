@@ -7,7 +7,7 @@
 
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/hill_model.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
 
 namespace {
 
@@ -162,8 +162,8 @@ TEST(HillModel, FIsNormOneAtTheVerticesAndRefusedOutside) {
   try {
     hinf::synth::hill_uncertainty_F(0.06, 0.05);
     FAIL() << "delta outside [-delta_bar, delta_bar] accepted";
-  } catch (const hinf::synth::Error& e) {
-    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput);
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
     EXPECT_NE(std::string(e.what()).find("0.06"), std::string::npos) << e.what();
   }
 }
@@ -252,8 +252,8 @@ TEST(HillModel, AbsurdPhysicalValuesAreRefusedNamingKeyAndValue) {
     try {
       hinf::synth::build_hill_plant(m);
       ADD_FAILURE() << "accepted: " << c.fragment;
-    } catch (const hinf::synth::Error& e) {
-      EXPECT_EQ(e.code(), hinf::synth::ErrorCode::InvalidInput) << e.what();
+    } catch (const hinf::Error& e) {
+      EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput) << e.what();
       EXPECT_NE(std::string(e.what()).find(c.fragment), std::string::npos)
           << "message '" << e.what() << "' lacks '" << c.fragment << "'";
     }

@@ -16,14 +16,13 @@
 #include <random>
 #include <vector>
 
-#include "hinf/synth/error_system.hpp"
-#include "hinf/synth/filter_compare.hpp"
-#include "hinf/synth/hinf_norm.hpp"
-#include "hinf/synth/riccati_filter.hpp"
-#include "hinf/synth/stability.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/certify/error_system.hpp"
+#include "hinf/certify/filter_compare.hpp"
+#include "hinf/certify/hinf_norm.hpp"
+#include "hinf/certify/riccati_filter.hpp"
+#include "hinf/certify/stability.hpp"
+#include "hinf/common/error.hpp"
 
-namespace hs = hinf::synth;
 using Eigen::MatrixXd;
 
 namespace {
@@ -150,8 +149,8 @@ std::vector<double> nelder_mead(const std::function<double(const std::vector<dou
   return s[b];
 }
 
-hs::Plant scalar_plant(double a, double b, double c, double d, double l) {
-  hs::Plant p;
+hinf::Plant scalar_plant(double a, double b, double c, double d, double l) {
+  hinf::Plant p;
   p.A = MatrixXd::Constant(1, 1, a);
   p.B = MatrixXd::Constant(1, 1, b);
   p.C = MatrixXd::Constant(1, 1, c);
@@ -162,9 +161,9 @@ hs::Plant scalar_plant(double a, double b, double c, double d, double l) {
   return p;
 }
 
-hs::Plant random_plant(int n, int p, int m, int l, double rho, unsigned seed) {
+hinf::Plant random_plant(int n, int p, int m, int l, double rho, unsigned seed) {
   std::mt19937_64 rng(seed);
-  hs::Plant pl;
+  hinf::Plant pl;
   pl.A = random_stable(n, rho, rng);
   pl.B = randn(n, p, rng);
   pl.C = randn(m, n, rng);
@@ -175,8 +174,8 @@ hs::Plant random_plant(int n, int p, int m, int l, double rho, unsigned seed) {
   return pl;
 }
 
-double error_norm(const hs::Plant& plant, const hs::Filter& f, double tol = 1e-10) {
-  return hs::discrete_hinf_norm(hs::error_system(plant, f), tol).norm;
+double error_norm(const hinf::Plant& plant, const hinf::Filter& f, double tol = 1e-10) {
+  return hinf::certify::discrete_hinf_norm(hinf::certify::error_system(plant, f), tol).norm;
 }
 
 }  // namespace
@@ -186,7 +185,7 @@ double error_norm(const hs::Plant& plant, const hs::Filter& f, double tol = 1e-1
 TEST(DiscreteHinfNorm, FirstOrderPositivePolePeaksAtZero) {
   // G(z) = b c / (z − a), a > 0: max |G| = b c / (1 − a) at θ = 0.
   const double a = 0.9, b = 2.0, c = 1.5;
-  const hs::HinfNorm r = hs::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b),
+  const hinf::certify::HinfNorm r = hinf::certify::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b),
                                                 MatrixXd::Constant(1, 1, c), MatrixXd::Zero(1, 1));
   const double exact = b * c / (1 - a);
   EXPECT_GE(r.norm, exact * (1 - 1e-13));
@@ -196,7 +195,7 @@ TEST(DiscreteHinfNorm, FirstOrderPositivePolePeaksAtZero) {
 
 TEST(DiscreteHinfNorm, FirstOrderNegativePolePeaksAtPi) {
   const double a = -0.7, b = 1.0, c = -3.0;
-  const hs::HinfNorm r = hs::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b),
+  const hinf::certify::HinfNorm r = hinf::certify::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b),
                                                 MatrixXd::Constant(1, 1, c), MatrixXd::Zero(1, 1));
   const double exact = std::abs(b * c) / (1 - std::abs(a));
   EXPECT_GE(r.norm, exact * (1 - 1e-13));
@@ -214,7 +213,7 @@ TEST(DiscreteHinfNorm, LightlyDampedSecondOrderClosedForm) {
     A << 2 * r * std::cos(th0), -r * r, 1, 0;
     B << 1, 0;
     C << 0, 1;
-    const hs::HinfNorm res = hs::discrete_hinf_norm(A, B, C, MatrixXd::Zero(1, 1));
+    const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, MatrixXd::Zero(1, 1));
     const double exact = 1.0 / (std::sin(th0) * (1 - r * r));
     const double theta_star = std::acos((1 + r * r) * std::cos(th0) / (2 * r));
     EXPECT_GE(res.norm, exact * (1 - 1e-11)) << "r = " << r;
@@ -244,7 +243,7 @@ TEST(DiscreteHinfNorm, MimoDiagonalIsMaxOfChannels) {
   const MatrixXd V = Eigen::HouseholderQR<MatrixXd>(randn(3, 3, rng)).householderQ();
   const Eigen::PartialPivLU<MatrixXd> Tlu(T);
   const MatrixXd At = Tlu.solve(A * T), Bt = Tlu.solve(B) * V, Ct = U * C * T;
-  const hs::HinfNorm res = hs::discrete_hinf_norm(At, Bt, Ct, MatrixXd::Zero(3, 3));
+  const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(At, Bt, Ct, MatrixXd::Zero(3, 3));
   EXPECT_GE(res.norm, exact * (1 - 1e-11));
   EXPECT_LE(res.norm, exact * (1 + 1.01e-10));
 }
@@ -256,10 +255,10 @@ TEST(DiscreteHinfNorm, ConstantAndZeroSystems) {
   const double sD = Eigen::JacobiSVD<MatrixXd>(D).singularValues()(0);
   MatrixXd A(2, 2);
   A << 0.5, 0.1, 0, -0.3;
-  const hs::HinfNorm r1 = hs::discrete_hinf_norm(A, MatrixXd::Ones(2, 2), MatrixXd::Zero(2, 2), D);
+  const hinf::certify::HinfNorm r1 = hinf::certify::discrete_hinf_norm(A, MatrixXd::Ones(2, 2), MatrixXd::Zero(2, 2), D);
   EXPECT_GE(r1.norm, sD * (1 - 1e-14));
   EXPECT_LE(r1.norm, sD * (1 + 1.01e-10));
-  const hs::HinfNorm r0 = hs::discrete_hinf_norm(A, MatrixXd::Zero(2, 2), MatrixXd::Ones(2, 2), MatrixXd::Zero(2, 2));
+  const hinf::certify::HinfNorm r0 = hinf::certify::discrete_hinf_norm(A, MatrixXd::Zero(2, 2), MatrixXd::Ones(2, 2), MatrixXd::Zero(2, 2));
   EXPECT_EQ(r0.norm, 0.0);
 }
 
@@ -267,7 +266,7 @@ TEST(DiscreteHinfNorm, FeedthroughAllPassCase) {
   // G(z) = (1 − a z)/(z − a) is all-pass: |G| = 1 on the circle, D = −a.
   // Realisation: G = −a + (1 − a²)/(z − a).
   const double a = 0.6;
-  const hs::HinfNorm r = hs::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, 1 - a * a),
+  const hinf::certify::HinfNorm r = hinf::certify::discrete_hinf_norm(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, 1 - a * a),
                                                 MatrixXd::Ones(1, 1), MatrixXd::Constant(1, 1, -a));
   EXPECT_GE(r.norm, 1 - 1e-13);
   EXPECT_LE(r.norm, 1 + 1.01e-10);
@@ -281,7 +280,7 @@ TEST(DiscreteHinfNorm, RandomSystemsAgainstDenseSweep) {
     const int n = 6, p = 2, l = 3;
     const MatrixXd A = random_stable(n, 0.95, rng), B = randn(n, p, rng), C = randn(l, n, rng);
     const MatrixXd D = trial % 2 ? MatrixXd(0.3 * randn(l, p, rng)) : MatrixXd::Zero(l, p);
-    const hs::HinfNorm res = hs::discrete_hinf_norm(A, B, C, D);
+    const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     const double sweep = sweep_max(A, B, C, D);
     // The sweep is a lower bound; the norm must not be below it, nor far above it.
     EXPECT_LE(sweep, res.norm * (1 + 1e-12)) << "trial " << trial;
@@ -300,7 +299,7 @@ TEST(DiscreteHinfNorm, MultiStepLevelSetIterationsAgainstDenseSweep) {
     const int n = 2 + t % 7, p = 1 + t % 3, l = 1 + t % 2;
     const MatrixXd A = random_stable(n, 0.5 + 0.49 * (t % 5) / 4.0, rng), B = randn(n, p, rng), C = randn(l, n, rng);
     const MatrixXd D = t % 3 == 0 ? MatrixXd(randn(l, p, rng)) : MatrixXd::Zero(l, p);
-    const hs::HinfNorm res = hs::discrete_hinf_norm(A, B, C, D);
+    const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     if (res.iterations < 2) continue;
     ++multi;
     const double sweep = sweep_max(A, B, C, D);
@@ -316,7 +315,7 @@ TEST(DiscreteHinfNorm, PeakValueAndBoundedRealRiccatiRecursion) {
     const int n = 5 + trial, p = 1 + trial % 3, l = 2;
     const MatrixXd A = random_stable(n, 0.9, rng), B = randn(n, p, rng), C = randn(l, n, rng);
     const MatrixXd D = MatrixXd::Zero(l, p);
-    const hs::HinfNorm res = hs::discrete_hinf_norm(A, B, C, D);
+    const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     // σ_max at the returned peak, evaluated independently, equals the norm.
     EXPECT_NEAR(sigma_dense(A, B, C, D, res.peak_frequency) / res.norm, 1.0, 1e-9);
     // Bounded-real lemma (independent): feasible just above, infeasible just below.
@@ -329,27 +328,27 @@ TEST(DiscreteHinfNorm, RejectsUnstableSystemNamingSpectralRadius) {
   MatrixXd A(2, 2);
   A << 1.2, 0, 0, 0.3;
   try {
-    hs::discrete_hinf_norm(A, MatrixXd::Ones(2, 1), MatrixXd::Ones(1, 2), MatrixXd::Zero(1, 1));
+    hinf::certify::discrete_hinf_norm(A, MatrixXd::Ones(2, 1), MatrixXd::Ones(1, 2), MatrixXd::Zero(1, 1));
     FAIL() << "no exception";
-  } catch (const hs::Error& e) {
-    EXPECT_EQ(e.code(), hs::ErrorCode::Infeasible);
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
     EXPECT_NE(std::string(e.what()).find("spectral radius 1.2"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(hs::discrete_hinf_norm(A, MatrixXd::Ones(3, 1), MatrixXd::Ones(1, 2), MatrixXd::Zero(1, 1)), hs::Error);
+  EXPECT_THROW(hinf::certify::discrete_hinf_norm(A, MatrixXd::Ones(3, 1), MatrixXd::Ones(1, 2), MatrixXd::Zero(1, 1)), hinf::Error);
 }
 
 TEST(DiscreteHinfNorm, FortyEightStatesIsFastAndCorrect) {
   // Error system of a random 24-state plant with its Kalman predictor (48 states).
-  const hs::Plant plant = random_plant(24, 6, 3, 6, 0.98, 4242);
-  const hs::HinfPredictorLevel kf = hs::hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
+  const hinf::Plant plant = random_plant(24, 6, 3, 6, 0.98, 4242);
+  const hinf::certify::HinfPredictorLevel kf = hinf::certify::hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
   ASSERT_TRUE(kf.feasible) << kf.reason;
-  const hs::StateSpace es = hs::error_system(plant, kf.filter);
+  const hinf::StateSpace es = hinf::certify::error_system(plant, kf.filter);
   ASSERT_EQ(es.A.rows(), 48);
-  hs::HinfNorm res;
+  hinf::certify::HinfNorm res;
   const int reps = 10;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  for (int i = 0; i < reps; ++i) res = hs::discrete_hinf_norm(es);
+  for (int i = 0; i < reps; ++i) res = hinf::certify::discrete_hinf_norm(es);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / reps;
   const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / reps;
   std::printf("discrete_hinf_norm, 48 states, 9 inputs, 6 outputs: wall %.2f ms, cpu %.2f ms (%d pencil solves)\n",
@@ -365,13 +364,13 @@ TEST(ErrorSystem, MatchesTimeDomainSimulationOfPlantAndFilter) {
   // Simulate plant (with a fixed admissible F) and filter separately; e = z − z_F must
   // equal the output of the error system driven by τ = [w; v].
   std::mt19937_64 rng(5);
-  hs::Plant pl = random_plant(3, 2, 2, 2, 0.8, 11);
+  hinf::Plant pl = random_plant(3, 2, 2, 2, 0.8, 11);
   pl.H = randn(3, 2, rng) * 0.1;
   pl.E = randn(1, 3, rng);
-  hs::Filter f{random_stable(3, 0.7, rng), randn(3, 2, rng), randn(2, 3, rng)};
+  hinf::Filter f{random_stable(3, 0.7, rng), randn(3, 2, rng), randn(2, 3, rng)};
   MatrixXd F(2, 1);
   F << 0.6, -0.8;
-  const hs::StateSpace es = hs::error_system(pl, f, F);
+  const hinf::StateSpace es = hinf::certify::error_system(pl, f, F);
   Eigen::VectorXd x = randn(3, 1, rng), xf = randn(3, 1, rng), xi(6);
   xi << x, xf;
   for (int k = 0; k < 30; ++k) {
@@ -389,9 +388,9 @@ TEST(ErrorSystem, MatchesTimeDomainSimulationOfPlantAndFilter) {
 }
 
 TEST(ErrorSystem, RejectsMismatchedDimensions) {
-  hs::Plant pl = random_plant(3, 2, 2, 2, 0.8, 1);
-  hs::Filter f{MatrixXd::Zero(3, 3), MatrixXd::Zero(3, 1), MatrixXd::Zero(2, 3)};  // B_F wrong
-  EXPECT_THROW(hs::error_system(pl, f), hs::Error);
+  hinf::Plant pl = random_plant(3, 2, 2, 2, 0.8, 1);
+  hinf::Filter f{MatrixXd::Zero(3, 3), MatrixXd::Zero(3, 1), MatrixXd::Zero(2, 3)};  // B_F wrong
+  EXPECT_THROW(hinf::certify::error_system(pl, f), hinf::Error);
 }
 
 // ------------------------------------------------------------------------- stability
@@ -399,42 +398,42 @@ TEST(ErrorSystem, RejectsMismatchedDimensions) {
 TEST(Stability, SpectralRadiusOfKnownMatrices) {
   MatrixXd R(2, 2);
   R << 0.6, -0.8, 0.8, 0.6;  // rotation, |λ| = 1
-  EXPECT_NEAR(hs::spectral_radius(0.9 * R), 0.9, 1e-15);
+  EXPECT_NEAR(hinf::certify::spectral_radius(0.9 * R), 0.9, 1e-15);
   MatrixXd T(3, 3);
   T << -0.95, 5, 7, 0, 0.2, 3, 0, 0, 0.5;  // triangular
-  EXPECT_NEAR(hs::spectral_radius(T), 0.95, 1e-14);
-  EXPECT_EQ(hs::spectral_radius(MatrixXd(0, 0)), 0.0);
+  EXPECT_NEAR(hinf::certify::spectral_radius(T), 0.95, 1e-14);
+  EXPECT_EQ(hinf::certify::spectral_radius(MatrixXd(0, 0)), 0.0);
 }
 
 TEST(Stability, SampledRobustStabilityFindsTheVertex) {
   // Scalar plant A + H F E = 0.5 + 0.6 F, F ∈ [−1, 1]: worst F = +1, ρ = 1.1.
-  hs::Plant pl = scalar_plant(0.5, 1, 1, 1, 1);
+  hinf::Plant pl = scalar_plant(0.5, 1, 1, 1, 1);
   pl.H = MatrixXd::Constant(1, 1, 1.0);
   pl.E = MatrixXd::Constant(1, 1, 0.6);
-  const hs::Filter f{MatrixXd::Constant(1, 1, 0.2), MatrixXd::Constant(1, 1, 0.3), MatrixXd::Constant(1, 1, 1)};
-  const hs::StabilitySample s = hs::sampled_robust_stability(pl, f, 50, 1u);
+  const hinf::Filter f{MatrixXd::Constant(1, 1, 0.2), MatrixXd::Constant(1, 1, 0.3), MatrixXd::Constant(1, 1, 1)};
+  const hinf::certify::StabilitySample s = hinf::certify::sampled_robust_stability(pl, f, 50, 1u);
   EXPECT_EQ(s.samples, 1 + 2 + 2 + 50);
   EXPECT_NEAR(s.max_spectral_radius, 1.1, 1e-14);
   ASSERT_EQ(s.worst_F.rows(), 1);
   EXPECT_EQ(s.worst_F(0, 0), 1.0);
-  const hs::StabilitySample again = hs::sampled_robust_stability(pl, f, 50, 1u);
+  const hinf::certify::StabilitySample again = hinf::certify::sampled_robust_stability(pl, f, 50, 1u);
   EXPECT_EQ(again.max_spectral_radius, s.max_spectral_radius);
 
-  const hs::StabilitySample listed = hs::sampled_robust_stability(
+  const hinf::certify::StabilitySample listed = hinf::certify::sampled_robust_stability(
       pl, f, std::vector<MatrixXd>{MatrixXd::Constant(1, 1, -1.0), MatrixXd::Constant(1, 1, 0.5)});
   EXPECT_EQ(listed.samples, 2);
   EXPECT_NEAR(listed.max_spectral_radius, 0.8, 1e-14);  // |0.5 + 0.3|
-  EXPECT_THROW(hs::sampled_robust_stability(pl, f, std::vector<MatrixXd>{MatrixXd::Constant(1, 1, 1.5)}), hs::Error);
+  EXPECT_THROW(hinf::certify::sampled_robust_stability(pl, f, std::vector<MatrixXd>{MatrixXd::Constant(1, 1, 1.5)}), hinf::Error);
 }
 
 TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {
   std::mt19937_64 rng(3);
-  hs::Plant pl = random_plant(4, 2, 2, 2, 0.9, 3);
+  hinf::Plant pl = random_plant(4, 2, 2, 2, 0.9, 3);
   pl.H = randn(4, 3, rng) * 0.05;
   pl.E = randn(2, 4, rng);
-  const hs::Filter f{random_stable(4, 0.5, rng), randn(4, 2, rng), randn(2, 4, rng)};
-  const hs::StabilitySample a = hs::sampled_robust_stability(pl, f, 200, 77u);
-  const hs::StabilitySample b = hs::sampled_robust_stability(pl, f, 200, 77u);
+  const hinf::Filter f{random_stable(4, 0.5, rng), randn(4, 2, rng), randn(2, 4, rng)};
+  const hinf::certify::StabilitySample a = hinf::certify::sampled_robust_stability(pl, f, 200, 77u);
+  const hinf::certify::StabilitySample b = hinf::certify::sampled_robust_stability(pl, f, 200, 77u);
   EXPECT_EQ(a.samples, 1 + 2 + 2 * 3 * 2 + 200);
   EXPECT_EQ(a.max_spectral_radius, b.max_spectral_radius);
   EXPECT_TRUE(a.worst_F.isApprox(b.worst_F));
@@ -445,11 +444,11 @@ TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {
 
 TEST(FilterCompare, InvariantUnderSimilarity) {
   std::mt19937_64 rng(12);
-  const hs::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
+  const hinf::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
   const MatrixXd T = MatrixXd::Identity(6, 6) + 0.3 * randn(6, 6, rng);
   const Eigen::PartialPivLU<MatrixXd> Tlu(T);
-  const hs::Filter b{Tlu.solve(a.A_F * T), Tlu.solve(a.B_F), a.C_F * T};
-  const hs::FilterDifference d = hs::compare_filters(a, b);
+  const hinf::Filter b{Tlu.solve(a.A_F * T), Tlu.solve(a.B_F), a.C_F * T};
+  const hinf::certify::FilterDifference d = hinf::certify::compare_filters(a, b);
   std::printf("similarity: relative difference %.3e\n", d.relative);
   EXPECT_LT(d.relative, 1e-10);
   EXPECT_GT(d.reference_norm, 0.0);
@@ -458,38 +457,38 @@ TEST(FilterCompare, InvariantUnderSimilarity) {
 TEST(FilterCompare, DetectsOnePercentChangeOfBF) {
   // T_b = 1.01 T_a exactly, so ‖T_a − T_b‖∞ / ‖T_a‖∞ = 0.01.
   std::mt19937_64 rng(13);
-  const hs::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
-  hs::Filter b = a;
+  const hinf::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
+  hinf::Filter b = a;
   b.B_F *= 1.01;
-  const hs::FilterDifference d = hs::compare_filters(a, b);
+  const hinf::certify::FilterDifference d = hinf::certify::compare_filters(a, b);
   EXPECT_NEAR(d.relative, 0.01, 1e-8);
   // A 1 % change of a single entry is also visible.
-  hs::Filter c = a;
+  hinf::Filter c = a;
   c.B_F(2, 1) *= 1.01;
-  EXPECT_GT(hs::compare_filters(a, c).relative, 1e-4);
+  EXPECT_GT(hinf::certify::compare_filters(a, c).relative, 1e-4);
 }
 
 TEST(FilterCompare, DifferentOrdersSameTransferFunction) {
   // b = a plus an unobservable extra state: same transfer function.
   std::mt19937_64 rng(14);
-  const hs::Filter a{random_stable(4, 0.8, rng), randn(4, 2, rng), randn(3, 4, rng)};
-  hs::Filter b{MatrixXd::Zero(5, 5), MatrixXd::Zero(5, 2), MatrixXd::Zero(3, 5)};
+  const hinf::Filter a{random_stable(4, 0.8, rng), randn(4, 2, rng), randn(3, 4, rng)};
+  hinf::Filter b{MatrixXd::Zero(5, 5), MatrixXd::Zero(5, 2), MatrixXd::Zero(3, 5)};
   b.A_F.topLeftCorner(4, 4) = a.A_F;
   b.A_F(4, 4) = 0.3;
   b.A_F(4, 0) = 1.0;
   b.B_F.topRows(4) = a.B_F;
   b.B_F(4, 0) = 1.0;
   b.C_F.leftCols(4) = a.C_F;
-  EXPECT_LT(hs::compare_filters(a, b).relative, 1e-10);
+  EXPECT_LT(hinf::certify::compare_filters(a, b).relative, 1e-10);
 }
 
 TEST(FilterCompare, RejectsUnstableFilter) {
-  const hs::Filter a{MatrixXd::Constant(1, 1, 0.5), MatrixXd::Ones(1, 1), MatrixXd::Ones(1, 1)};
-  const hs::Filter b{MatrixXd::Constant(1, 1, 1.5), MatrixXd::Ones(1, 1), MatrixXd::Ones(1, 1)};
+  const hinf::Filter a{MatrixXd::Constant(1, 1, 0.5), MatrixXd::Ones(1, 1), MatrixXd::Ones(1, 1)};
+  const hinf::Filter b{MatrixXd::Constant(1, 1, 1.5), MatrixXd::Ones(1, 1), MatrixXd::Ones(1, 1)};
   try {
-    hs::compare_filters(a, b);
+    hinf::certify::compare_filters(a, b);
     FAIL() << "no exception";
-  } catch (const hs::Error& e) {
+  } catch (const hinf::Error& e) {
     EXPECT_NE(std::string(e.what()).find("filter b is not Schur stable"), std::string::npos) << e.what();
   }
 }
@@ -497,13 +496,13 @@ TEST(FilterCompare, RejectsUnstableFilter) {
 // ------------------------------------------------------------ H∞ a priori Riccati filter
 
 TEST(RiccatiFilter, ScalarPlantMatchesBruteForceOverFirstOrderFilters) {
-  for (const hs::Plant& pl : {scalar_plant(0.8, 1.0, 1.0, 0.5, 1.0), scalar_plant(-0.5, 0.7, 2.0, 1.0, 0.7),
+  for (const hinf::Plant& pl : {scalar_plant(0.8, 1.0, 1.0, 0.5, 1.0), scalar_plant(-0.5, 0.7, 2.0, 1.0, 0.7),
                               scalar_plant(0.95, 0.3, 0.5, 0.2, 1.0)}) {
-    const hs::HinfPredictorOptimum opt = hs::optimal_hinf_predictor(pl, 1e-10);
+    const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
     // Brute force over first-order filters (A_F, B_F, C_F) = (a_f, g, 1): T(z) = g/(z − a_f).
     auto cost = [&](const std::vector<double>& x) {
       if (std::abs(x[0]) >= 0.999) return 1e9;
-      const hs::Filter f{MatrixXd::Constant(1, 1, x[0]), MatrixXd::Constant(1, 1, x[1]), MatrixXd::Ones(1, 1)};
+      const hinf::Filter f{MatrixXd::Constant(1, 1, x[0]), MatrixXd::Constant(1, 1, x[1]), MatrixXd::Ones(1, 1)};
       return error_norm(pl, f, 1e-12);
     };
     double best = std::numeric_limits<double>::infinity();
@@ -529,13 +528,13 @@ TEST(RiccatiFilter, SmallMeasurementNoiseClosedFormBracket) {
   // (A_F = 0, B_F = a/c, C_F = l) gives e(k) = l b w(k−1) − l (a d / c) v(k−1), gain
   // |l| √(b² + (a d / c)²) ⇒ γ* ≤ that.
   const double a = 0.8, b = 1.0, c = 2.0, d = 0.01, l = 1.5;
-  const double gstar = hs::optimal_hinf_predictor_gamma(scalar_plant(a, b, c, d, l), 1e-12);
+  const double gstar = hinf::certify::optimal_hinf_predictor_gamma(scalar_plant(a, b, c, d, l), 1e-12);
   EXPECT_GE(gstar, std::abs(l * b));
   EXPECT_LE(gstar, std::abs(l) * std::sqrt(b * b + (a * d / c) * (a * d / c)) * (1 + 1e-12));
 }
 
 TEST(RiccatiFilter, LargeGammaTendsToKalmanPredictor) {
-  const hs::Plant pl = random_plant(4, 2, 2, 3, 0.9, 31);
+  const hinf::Plant pl = random_plant(4, 2, 2, 3, 0.9, 31);
   // Kalman predictor DARE by fixed-point iteration of the Riccati recursion (independent).
   const MatrixXd Q = pl.B * pl.B.transpose(), R = pl.D * pl.D.transpose();
   MatrixXd P = Q;
@@ -547,13 +546,13 @@ TEST(RiccatiFilter, LargeGammaTendsToKalmanPredictor) {
     P = 0.5 * (Pn + Pn.transpose());
     if (change < 1e-15 * P.norm()) break;
   }
-  const hs::HinfPredictorLevel inf = hs::hinf_predictor_at_level(pl, std::numeric_limits<double>::infinity());
+  const hinf::certify::HinfPredictorLevel inf = hinf::certify::hinf_predictor_at_level(pl, std::numeric_limits<double>::infinity());
   ASSERT_TRUE(inf.feasible) << inf.reason;
   EXPECT_LT((inf.P - P).norm() / P.norm(), 1e-10);
-  const hs::HinfPredictorLevel big = hs::hinf_predictor_at_level(pl, 1e6);
+  const hinf::certify::HinfPredictorLevel big = hinf::certify::hinf_predictor_at_level(pl, 1e6);
   ASSERT_TRUE(big.feasible) << big.reason;
   EXPECT_LT((big.P - P).norm() / P.norm(), 1e-8);
-  const hs::HinfPredictorLevel mid = hs::hinf_predictor_at_level(pl, 1e2);
+  const hinf::certify::HinfPredictorLevel mid = hinf::certify::hinf_predictor_at_level(pl, 1e2);
   ASSERT_TRUE(mid.feasible) << mid.reason;
   EXPECT_GT((mid.P - P).norm() / P.norm(), 1e-9);  // the γ term really enters
   EXPECT_LT(big.riccati_residual, 1e-10);
@@ -561,44 +560,44 @@ TEST(RiccatiFilter, LargeGammaTendsToKalmanPredictor) {
 
 TEST(RiccatiFilter, CentralFilterAchievesTheLevel) {
   for (unsigned seed : {41u, 42u, 43u}) {
-    const hs::Plant pl = random_plant(4, 2, 2, 3, 0.95, seed);
-    const hs::HinfPredictorOptimum opt = hs::optimal_hinf_predictor(pl, 1e-10);
+    const hinf::Plant pl = random_plant(4, 2, 2, 3, 0.95, seed);
+    const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
     const double LB = Eigen::JacobiSVD<MatrixXd>(pl.L * pl.B).singularValues()(0);
     EXPECT_GE(opt.gamma, LB);
     for (double factor : {1 + 1e-4, 1 + 1e-2, 1.5, 4.0}) {
       const double g = opt.gamma * factor;
-      const hs::HinfPredictorLevel lev = hs::hinf_predictor_at_level(pl, g);
+      const hinf::certify::HinfPredictorLevel lev = hinf::certify::hinf_predictor_at_level(pl, g);
       ASSERT_TRUE(lev.feasible) << lev.reason;
-      ASSERT_LT(hs::spectral_radius(lev.filter.A_F), 1.0);
+      ASSERT_LT(hinf::certify::spectral_radius(lev.filter.A_F), 1.0);
       const double nrm = error_norm(pl, lev.filter);
       // The central filter meets the level, and no filter beats γ*.
       EXPECT_LE(nrm, g * (1 + 1e-6)) << "seed " << seed << " factor " << factor;
       EXPECT_GE(nrm, opt.gamma * (1 - 1e-6)) << "seed " << seed << " factor " << factor;
     }
-    EXPECT_FALSE(hs::hinf_predictor_at_level(pl, opt.gamma * (1 - 1e-4)).feasible);
+    EXPECT_FALSE(hinf::certify::hinf_predictor_at_level(pl, opt.gamma * (1 - 1e-4)).feasible);
     std::printf("seed %u: γ* = %.10g (σ(LB) = %.6g), bisection steps %d\n", seed, opt.gamma, LB, opt.bisection_steps);
   }
 }
 
 TEST(RiccatiFilter, LocalSearchOverSecondOrderFiltersCannotBeatGammaStar) {
-  const hs::Plant pl = random_plant(2, 1, 1, 1, 0.9, 77);
-  const hs::HinfPredictorOptimum opt = hs::optimal_hinf_predictor(pl, 1e-10);
-  const hs::HinfPredictorLevel start = hs::hinf_predictor_at_level(pl, opt.gamma * 1.05);
+  const hinf::Plant pl = random_plant(2, 1, 1, 1, 0.9, 77);
+  const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
+  const hinf::certify::HinfPredictorLevel start = hinf::certify::hinf_predictor_at_level(pl, opt.gamma * 1.05);
   ASSERT_TRUE(start.feasible);
   // Parameters: A_F (4), B_F (2), C_F (2).
   auto unpack = [](const std::vector<double>& x) {
-    hs::Filter f{MatrixXd(2, 2), MatrixXd(2, 1), MatrixXd(1, 2)};
+    hinf::Filter f{MatrixXd(2, 2), MatrixXd(2, 1), MatrixXd(1, 2)};
     f.A_F << x[0], x[1], x[2], x[3];
     f.B_F << x[4], x[5];
     f.C_F << x[6], x[7];
     return f;
   };
   auto cost = [&](const std::vector<double>& x) {
-    const hs::Filter f = unpack(x);
-    if (hs::spectral_radius(f.A_F) >= 0.9999) return 1e9;
+    const hinf::Filter f = unpack(x);
+    if (hinf::certify::spectral_radius(f.A_F) >= 0.9999) return 1e9;
     return error_norm(pl, f, 1e-12);
   };
-  const hs::Filter& f0 = start.filter;
+  const hinf::Filter& f0 = start.filter;
   std::vector<double> x{f0.A_F(0, 0), f0.A_F(0, 1), f0.A_F(1, 0), f0.A_F(1, 1), f0.B_F(0), f0.B_F(1), f0.C_F(0), f0.C_F(1)};
   double best = cost(x);
   for (int restart = 0; restart < 6; ++restart) x = nelder_mead(cost, x, 0.05 / (1 << restart), 1500, &best);
@@ -608,14 +607,14 @@ TEST(RiccatiFilter, LocalSearchOverSecondOrderFiltersCannotBeatGammaStar) {
 }
 
 TEST(RiccatiFilter, RejectsUnstablePlantAndSingularNoise) {
-  hs::Plant pl = scalar_plant(1.01, 1, 1, 1, 1);
+  hinf::Plant pl = scalar_plant(1.01, 1, 1, 1, 1);
   try {
-    hs::optimal_hinf_predictor_gamma(pl, 1e-6);
+    hinf::certify::optimal_hinf_predictor_gamma(pl, 1e-6);
     FAIL() << "no exception";
-  } catch (const hs::Error& e) {
-    EXPECT_EQ(e.code(), hs::ErrorCode::Infeasible);
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
     EXPECT_NE(std::string(e.what()).find("spectral radius"), std::string::npos);
   }
   pl = scalar_plant(0.5, 1, 1, 0, 1);
-  EXPECT_THROW(hs::optimal_hinf_predictor_gamma(pl, 1e-6), hs::Error);
+  EXPECT_THROW(hinf::certify::optimal_hinf_predictor_gamma(pl, 1e-6), hinf::Error);
 }

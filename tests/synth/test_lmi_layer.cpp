@@ -16,21 +16,21 @@
 #include <stdexcept>
 #include <string>
 
-#include "barrier/ipopt_centering.hpp"
-#include "barrier/log_det_barrier.hpp"
-#include "barrier/path_following.hpp"
-#include "certify/dense_lmi.hpp"
+#include "ipopt_centering.hpp"
+#include "log_det_barrier.hpp"
+#include "hinf/sdp/path_following.hpp"
+#include "hinf/certify/dense_lmi.hpp"
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/plant.hpp"
-#include "lmi/lmi_problem.hpp"
-#include "model/theorem1.hpp"
+#include "hinf/models/plant.hpp"
+#include "hinf/lmi/lmi_problem.hpp"
+#include "theorem1.hpp"
 
 namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using hinf::lmi::LmiProblem;
-using hinf::synth::Plant;
+using hinf::Plant;
 
 MatrixXd rnd(std::mt19937& g, int r, int c) {
   std::normal_distribution<double> N(0.0, 1.0);
@@ -233,8 +233,8 @@ TEST(LmiLayer, Theorem1GradientHessianMatchDenseTraces) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " p=" << d.p << " m=" << d.m << " q=" << d.q
                                     << " l=" << d.l << " j=" << d.j << " k=" << d.k);
     const Plant P = random_plant(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
-    const double s = hinf::model::he_balance(P);
-    const auto T = hinf::model::build_theorem1(P, s);
+    const double s = hinf::synth::he_balance(P);
+    const auto T = hinf::synth::build_theorem1(P, s);
     const int expected_vars = d.n * (d.n + 1) + d.n * d.n + d.n * d.m + d.l * d.n + 1 + (d.j > 0 ? 1 : 0);
     EXPECT_EQ(T.lmi.num_params(), expected_vars);
     EXPECT_EQ(T.lmi.order(), 4 * d.n + d.p + d.q + d.l + d.j);
@@ -286,12 +286,12 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " j=" << d.j);
     const Plant P = random_plant(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
     const bool unc = d.j > 0;
-    const double s = hinf::model::he_balance(P);
+    const double s = hinf::synth::he_balance(P);
     if (unc) {  // the balance equalises ‖sH‖_F and ‖E/s‖_F (SPEC §3)
       EXPECT_NEAR((s * P.H).norm(), (P.E / s).norm(), 1e-12 * (s * P.H).norm());
       EXPECT_NE(s, 1.0);
     }
-    const auto T = hinf::model::build_theorem1(P, s);
+    const auto T = hinf::synth::build_theorem1(P, s);
     for (int trial = 0; trial < 4; ++trial) {
       const VectorXd x = rnd_vec(g, T.lmi.num_params());
       hinf::certify::Theorem1Point pt;
@@ -319,7 +319,7 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
 // Directional central differences of LogDetBarrier::value / gradient along random
 // directions v at a point on the central path:  (f(z+εv) − f(z−εv))/2ε ≈ ∇fᵀv and
 // (∇f(z+εv) − ∇f(z−εv))/2ε ≈ ∇²f v. Truncation error O(ε²), round-off O(u·|f|/ε).
-void check_barrier_fd(hinf::barrier::LogDetBarrier& b, const VectorXd& z, std::mt19937& g,
+void check_barrier_fd(hinf::sdp::LogDetBarrier& b, const VectorXd& z, std::mt19937& g,
                       double tol) {
   double f0 = 0;
   VectorXd g0;
@@ -368,7 +368,7 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   L.add_scalar_term(2, 2, z, -MatrixXd::Identity(4, 4));
   for (int b = 0; b < 3; ++b) L.add_constant(b, b, -MatrixXd::Identity(L.block_size(b), L.block_size(b)));
   const VectorXd c = rnd_vec(g, L.num_params());
-  hinf::barrier::LogDetBarrier b(L, c, 1e-9, 10.0, false);
+  hinf::sdp::LogDetBarrier b(L, c, 1e-9, 10.0, false);
   b.set_t(1.7);
   const VectorXd x = 0.05 * rnd_vec(g, L.num_params());
   ASSERT_TRUE(b.inside(x));
@@ -387,7 +387,7 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
 TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
   std::mt19937 g(23);
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T1 = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
+  const auto T1 = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const LmiProblem& L = T1.lmi;
   const int N = L.order(), np = L.num_params();
   const MatrixXd T = rnd(g, N, N);
@@ -409,12 +409,12 @@ TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
 TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
   std::mt19937 g(29);
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const VectorXd c = T.lmi.cost_of(T.g);
-  hinf::synth::Settings st;
+  hinf::sdp::Options st;
   st.relative_gap_tol = 10.0;  // first phase-II centring: a well-conditioned point
-  const auto sol = hinf::barrier::minimize_linear(T.lmi, c, st);
-  hinf::barrier::LogDetBarrier b(T.lmi, c, st.lmi_margin, st.feasibility_radius, false);
+  const auto sol = hinf::sdp::minimize_linear(T.lmi, c, st);
+  hinf::sdp::LogDetBarrier b(T.lmi, c, st.lmi_margin, st.feasibility_radius, false);
   b.set_t(3.0);
   const VectorXd x = sol.x;
   ASSERT_TRUE(b.inside(x));
@@ -434,7 +434,7 @@ TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
 
 // A phase-I point (x, s) of T: x = 0.3·N(0, 1) entries, s = max(0, λ_max(M(x))) + room, so
 // that −M(x) − εI + sI ≻ 0 with margin `room` (less ε).
-VectorXd phase1_point(const hinf::model::Theorem1Lmi& T, std::mt19937& g, double room) {
+VectorXd phase1_point(const hinf::synth::Theorem1Lmi& T, std::mt19937& g, double room) {
   const int np = T.lmi.num_params();
   VectorXd z(np + 1);
   z.head(np) = 0.3 * rnd_vec(g, np);
@@ -446,8 +446,8 @@ VectorXd phase1_point(const hinf::model::Theorem1Lmi& T, std::mt19937& g, double
 TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase1) {
   std::mt19937 g(17);
   const Plant P = random_plant(g, 4, 1, 2, 2, 3, 2, 1);
-  const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
-  hinf::barrier::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
+  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   b.set_t(2.0);
   const VectorXd z = phase1_point(T, g, 0.5);
   check_barrier_fd(b, z, g, 1e-6);
@@ -455,9 +455,9 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase1) {
 
 // ---------------------------------------------------------------- Ipopt derivative test
 // Runs Ipopt's second-order derivative checker on the barrier at z, returns its output.
-std::string run_derivative_checker(hinf::barrier::LogDetBarrier& b, const VectorXd& z) {
-  hinf::barrier::IpoptCentering ip;
-  hinf::barrier::CenteringOptions opt;
+std::string run_derivative_checker(hinf::sdp::LogDetBarrier& b, const VectorXd& z) {
+  hinf::sdp::IpoptCentering ip;
+  hinf::sdp::CenteringOptions opt;
   opt.derivative_test = true;
   opt.max_iterations = 1;
   std::fflush(stdout);
@@ -478,8 +478,8 @@ void expect_checker_clean(const std::string& out) {
 TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
   std::mt19937 g(15);
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
-  hinf::barrier::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
+  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   // small t: Ipopt's forward differences (step 1e-7) lose u·|f|/1e-7 to round-off,
   // so |f| = |t·s − log det …| must stay small next to its tolerance 1e-5
   b.set_t(1e-3);
@@ -500,14 +500,14 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
 TEST(LmiLayer, IpoptDerivativeCheckerPhase2) {
   std::mt19937 g(15);
   const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::model::build_theorem1(P, hinf::model::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const int np = T.lmi.num_params();
   const VectorXd c = T.lmi.cost_of(T.g);
-  hinf::synth::Settings st;
+  hinf::sdp::Options st;
   st.relative_gap_tol = 10.0;  // stop at the first phase-II centring: well inside the cone
-  const auto sol = hinf::barrier::minimize_linear(T.lmi, c, st);
+  const auto sol = hinf::sdp::minimize_linear(T.lmi, c, st);
   ASSERT_EQ(sol.x.size(), np);
-  hinf::barrier::LogDetBarrier b(T.lmi, c, st.lmi_margin, st.feasibility_radius, false);
+  hinf::sdp::LogDetBarrier b(T.lmi, c, st.lmi_margin, st.feasibility_radius, false);
   b.set_t(1e-3);
   ASSERT_TRUE(b.inside(sol.x)) << "solver returned a point outside the LMI";
   expect_checker_clean(run_derivative_checker(b, sol.x));

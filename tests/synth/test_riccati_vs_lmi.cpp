@@ -9,14 +9,14 @@
 #include <random>
 
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/riccati_filter.hpp"
+#include "hinf/certify/riccati_filter.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "random_plants.hpp"
 
 namespace {
 
 using Eigen::MatrixXd;
-using hinf::synth::Plant;
+using hinf::Plant;
 
 Plant random_nominal_plant(std::mt19937& g, int n, int p, int m, int q, int l, double rho) {
   using hinf::test::random_matrix;
@@ -33,7 +33,7 @@ Plant random_nominal_plant(std::mt19937& g, int n, int p, int m, int q, int l, d
 }
 
 void expect_same_gamma(const Plant& P) {
-  const double g_ric = hinf::synth::optimal_hinf_predictor_gamma(P, 1e-10);
+  const double g_ric = hinf::certify::optimal_hinf_predictor_gamma(P, 1e-10);
   hinf::synth::SynthesisResult res;
   try {
     res = hinf::synth::synthesize(P, hinf::synth::Settings{});

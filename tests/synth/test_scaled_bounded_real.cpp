@@ -9,10 +9,10 @@
 #include <random>
 #include <string>
 
-#include "certify/scaled_bounded_real.hpp"
+#include "hinf/certify/scaled_bounded_real.hpp"
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/error_system.hpp"
-#include "hinf/synth/hinf_norm.hpp"
+#include "hinf/certify/error_system.hpp"
+#include "hinf/certify/hinf_norm.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "random_plants.hpp"
 
@@ -20,8 +20,8 @@ namespace {
 
 using hinf::certify::ScaledBoundedReal;
 using hinf::certify::scaled_bounded_real;
-using hinf::synth::Filter;
-using hinf::synth::Plant;
+using hinf::Filter;
+using hinf::Plant;
 
 // Relative distance from the LMI optimum at which both sides must be decided; the
 // barrier solver's γ² is within 1e-7 relative, the H∞ norms within 1e-10.
@@ -39,8 +39,8 @@ void expect_agreement(const Plant& P, const Filter& F) {
                                << " at λ = " << below.lambda;
   EXPECT_GE(below.scaled_norm, 1.0);
   // the certified γ at the multiplier found above lies between the two
-  const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
-  const double nominal = hinf::synth::discrete_hinf_norm(e, 1e-10).norm;
+  const hinf::StateSpace e = hinf::certify::error_system(P, F);
+  const double nominal = hinf::certify::discrete_hinf_norm(e, 1e-10).norm;
   const double g_at = ScaledBoundedReal(P, e).gamma_at_multiplier(above.lambda, nominal, g_lmi * (1 + kSide), 1e-9);
   EXPECT_LE(g_at, g_lmi * (1 + kSide));
   EXPECT_GE(g_at, g_lmi * (1 - kSide));
@@ -74,7 +74,7 @@ TEST(ScaledBoundedReal, CertainPlantReducesToNominalNorm) {
   P.H.resize(0, 0);
   P.E.resize(0, 0);
   const Filter F = hinf::test::random_stable_filter(g, P);
-  const double nrm = hinf::synth::discrete_hinf_norm(hinf::synth::error_system(P, F), 1e-12).norm;
+  const double nrm = hinf::certify::discrete_hinf_norm(hinf::certify::error_system(P, F), 1e-12).norm;
   EXPECT_TRUE(scaled_bounded_real(P, F, nrm * (1 + 1e-8)).feasible);
   EXPECT_FALSE(scaled_bounded_real(P, F, nrm * (1 - 1e-8)).feasible);
 }
@@ -107,8 +107,8 @@ TEST(ScaledBoundedReal, GammaAtMultiplierMatchesBisection) {
     SCOPED_TRACE(testing::Message() << "n = " << n);
     const Plant P = hinf::test::random_uncertain_plant(g, n);
     const Filter F = hinf::test::random_stable_filter(g, P);
-    const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
-    const double nominal = hinf::synth::discrete_hinf_norm(e, 1e-10).norm;
+    const hinf::StateSpace e = hinf::certify::error_system(P, F);
+    const double nominal = hinf::certify::discrete_hinf_norm(e, 1e-10).norm;
     const double g_lmi = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
     const double g_hi = 1.5 * g_lmi;  // passes at the best multiplier for g_lmi·(1 + 1e-5)
     const double lambda = scaled_bounded_real(P, F, g_lmi * (1 + kSide), false).lambda;
@@ -139,7 +139,7 @@ TEST(ScaledBoundedReal, SlopeSearchFindsTheGoldenSectionMinimum) {
     SCOPED_TRACE(testing::Message() << "n = " << n);
     const Plant P = hinf::test::random_uncertain_plant(g, n);
     const Filter F = hinf::test::random_stable_filter(g, P);
-    const hinf::synth::StateSpace e = hinf::synth::error_system(P, F);
+    const hinf::StateSpace e = hinf::certify::error_system(P, F);
     const double g_lmi = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
     for (double gamma : {g_lmi * (1 - kSide), g_lmi * (1 + kSide), 2 * g_lmi}) {
       ScaledBoundedReal sbr(P, e);
@@ -171,7 +171,7 @@ TEST(ScaledBoundedReal, SynthesisCertificateMultiplierRecomputes) {
     SCOPED_TRACE(name);
     const auto cfg = hinf::synth::load_config(std::string(HINF_SOURCE_DIR "/configs/") + name);
     const auto res = hinf::synth::synthesize(cfg.plant, cfg.settings);
-    const hinf::synth::StateSpace e = hinf::synth::error_system(cfg.plant, res.filter);
+    const hinf::StateSpace e = hinf::certify::error_system(cfg.plant, res.filter);
     ScaledBoundedReal sbr(cfg.plant, e);
     const double v = sbr.scaled_norm(res.gamma, res.certificate.robust_multiplier);
     EXPECT_LT(v, 1.0);

@@ -10,14 +10,14 @@
 #include <string>
 
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "random_plants.hpp"
 
 namespace {
 
 using Eigen::MatrixXd;
-using hinf::synth::Plant;
+using hinf::Plant;
 using hinf::synth::Settings;
 
 Plant example_plant() {
@@ -102,8 +102,8 @@ void expect_infeasible(const Plant& P, const std::string& must_contain, const st
   try {
     (void)hinf::synth::synthesize(P, Settings{});
     FAIL() << "no error for an ill-posed plant";
-  } catch (const hinf::synth::Error& e) {
-    EXPECT_EQ(e.code(), hinf::synth::ErrorCode::Infeasible) << e.what();
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible) << e.what();
     const std::string msg = e.what();
     EXPECT_NE(msg.find(must_contain), std::string::npos) << msg;
     EXPECT_NE(msg.find(number), std::string::npos) << msg << "\n(expected the value " << number << ")";

@@ -1,11 +1,12 @@
 // parse_config: the top level of a config (docs/file-formats.md, "Config").
 #include <vector>
 
+#include "hinf/synth/validate_plant.hpp"
 #include "config/sections.hpp"
-#include "config/sha256.hpp"
-#include "config/yaml_reader.hpp"
+#include "hinf/common/sha256.hpp"
+#include "hinf/common/yaml_reader.hpp"
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
 
 namespace hinf::synth {
 namespace {

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
 
 namespace hinf::synth {
 namespace {

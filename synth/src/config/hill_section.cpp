@@ -1,9 +1,9 @@
 // `hill:`, the physical Hill/CW model of SPEC §3 (units: rad/s, s, kg).
 #include <cmath>
 
-#include "config/did_you_mean.hpp"
+#include "hinf/common/suggest.hpp"
 #include "config/sections.hpp"
-#include "core/number_text.hpp"
+#include "hinf/common/number_text.hpp"
 
 namespace hinf::synth {
 namespace {

@@ -2,9 +2,9 @@
 #pragma once
 #include <yaml-cpp/yaml.h>
 
-#include "config/yaml_reader.hpp"
+#include "hinf/common/yaml_reader.hpp"
 #include "hinf/synth/hill_model.hpp"
-#include "hinf/synth/plant.hpp"
+#include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/settings.hpp"
 
 namespace hinf::synth {

@@ -19,7 +19,7 @@ struct ObtainedGains {
 };
 
 // Errors propagate as hinf::runtime_yaml::GainsFileError (invalid file: exit 2) or
-// hinf::synth::Error (its own code: invalid 2, infeasible 3, numerical 4).
+// hinf::Error (its own code: invalid 2, infeasible 3, numerical 4).
 ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose);
 
 }  // namespace hinf::sim

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/common/atomic_file.hpp"
 #include "hinf/sim/run.hpp"
 
 namespace hinf::sim {
@@ -15,8 +16,10 @@ class PlotError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Writes DIR/position_error.png, DIR/velocity_error.png, DIR/thrust.png (temporary files,
-// renamed when gnuplot succeeded). Returns the file names. Throws PlotError.
-std::vector<std::string> write_plots(const std::string& dir, const Trajectory& trajectory, const std::string& title);
+// Draws DIR/position_error.png, DIR/velocity_error.png, DIR/thrust.png into temporaries of
+// `outputs` (renamed with the run's other outputs by outputs.commit()). Returns the file
+// names. Throws PlotError.
+std::vector<std::string> write_plots(const std::string& dir, const Trajectory& trajectory, const std::string& title,
+                                     AtomicFileSet& outputs);
 
 }  // namespace hinf::sim

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "hinf/synth/hill_model.hpp"
-#include "hinf/synth/plant.hpp"
+#include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/settings.hpp"
 
 namespace hinf::synth {

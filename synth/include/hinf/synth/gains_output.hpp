@@ -1,4 +1,4 @@
-// Writing a gains file (docs/file-formats.md, format hinf-gains/1) and atomic file output.
+// The gains file as text (docs/file-formats.md, format hinf-gains/1); hinf/common/atomic_file.hpp writes it.
 #pragma once
 #include <string>
 
@@ -14,11 +14,6 @@ struct GainsProvenance {
 // The gains file as text. Deterministic: same result → same bytes, except the
 // `timing:` section (last in the file).
 std::string format_gains_yaml(const SynthesisResult& result, const GainsProvenance& provenance);
-
-// Writes `text` to `path` atomically (temporary file in the same directory, then
-// rename). Throws Error(InvalidInput) naming the path and the reason; never leaves a
-// partial file.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 const char* tool_version();
 

@@ -29,7 +29,7 @@
 #pragma once
 #include <Eigen/Dense>
 
-#include "hinf/synth/plant.hpp"
+#include "hinf/synth/validate_plant.hpp"
 
 namespace hinf::synth {
 

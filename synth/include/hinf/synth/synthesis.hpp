@@ -5,9 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "hinf/synth/plant.hpp"
+#include "hinf/models/plant.hpp"
 #include "hinf/synth/settings.hpp"
-#include "hinf/synth/status.hpp"
+#include "hinf/common/error.hpp"
+#include "hinf/sdp/path_following.hpp"
+#include "hinf/sdp/status.hpp"
 
 namespace hinf::synth {
 
@@ -43,7 +45,7 @@ struct Certificate {
 };
 
 struct SolverInfo {
-  SolverStatus status = SolverStatus::NotRun;
+  sdp::Status status = sdp::Status::NotRun;
   int newton_iterations = 0;       // Ipopt iterations, phase I + II
   int phase1_iterations = 0;
   int centerings = 0;              // outer barrier steps
@@ -70,21 +72,14 @@ struct SynthesisResult {
 // Error(NumericalFailure) if the certificate fails; never returns an uncertified filter.
 SynthesisResult synthesize(const Plant& plant, const Settings& settings);
 
-// Progress of the interior-point solver, for an iteration table (`--verbose`).
-// Which SDP an iteration belongs to: Theorem 1 itself, or the optional γ back-off
-// (largest LMI margin at (1+b)γ*).
+// Progress of the interior-point solver, for an iteration table (`--verbose`): which SDP
+// an iteration belongs to — Theorem 1 itself, or the optional γ back-off (largest LMI
+// margin at (1+b)γ*) — and the solver's own progress record.
 enum class SolveStage { Synthesis, Backoff };
 
 struct IterationReport {
   SolveStage stage = SolveStage::Synthesis;
-  int phase = 2;           // 1: finding a strictly feasible point, 2: minimising γ²
-  int centering = 0;       // outer (barrier-parameter) step
-  double t = 0;            // barrier parameter
-  double objective = 0;    // γ² (phase 2) or the infeasibility s (phase 1)
-  double gap = 0;          // bound on objective − optimum: (N+1)/t
-  int newton = 0;          // Ipopt (Newton) iterations in this centring
-  double lambda2 = 0;      // Newton decrement² at its end
-  double elapsed_s = 0;
+  sdp::Progress progress;
 };
 using IterationObserver = std::function<void(const IterationReport&)>;
 SynthesisResult synthesize(const Plant& plant, const Settings& settings,

@@ -1,0 +1,69 @@
+#include "cli_support.hpp"
+
+#include <cmath>
+
+namespace hinf::cli {
+
+using hinf::Error;
+using hinf::ErrorCode;
+
+std::string num(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Plant& plant,
+                                const std::string& path) {
+  auto need = [&](const char* key, const Eigen::MatrixXd& M, int r, int c) {
+    if (M.rows() != r || M.cols() != c)
+      throw Error(ErrorCode::InvalidInput,
+                  path + ": filter." + key + " is " + std::to_string(M.rows()) + "x" +
+                      std::to_string(M.cols()) + ", the config's plant needs " + std::to_string(r) +
+                      "x" + std::to_string(c));
+  };
+  need("A_F", g.A_F, plant.n(), plant.n());
+  need("B_F", g.B_F, plant.n(), plant.m());
+  need("C_F", g.C_F, plant.l(), plant.n());
+  return hinf::Filter{g.A_F, g.B_F, g.C_F};
+}
+
+void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
+  auto range = [&](const char* name, const Eigen::MatrixXd& M) {
+    double lo = INFINITY, hi = 0;
+    for (int i = 0; i < M.size(); ++i) {
+      const double a = std::abs(M.data()[i]);
+      if (a > 0) lo = std::min(lo, a), hi = std::max(hi, a);
+    }
+    if (hi == 0) std::fprintf(out, "  %-2s %dx%d  all zero\n", name, (int)M.rows(), (int)M.cols());
+    else std::fprintf(out, "  %-2s %dx%d  |nonzero| in [%.3g, %.3g]\n", name, (int)M.rows(), (int)M.cols(), lo, hi);
+  };
+  std::fprintf(out, "plant coefficient ranges:\n");
+  range("A", p.A);
+  range("B", p.B);
+  range("C", p.C);
+  range("D", p.D);
+  range("L", p.L);
+  if (p.uncertain()) {
+    range("H", p.H);
+    range("E", p.E);
+  }
+}
+
+void IterationTable::operator()(const synth::IterationReport& report) {
+  using synth::SolveStage;
+  const sdp::Progress& r = report.progress;
+  if (!started_ || report.stage != stage_) {
+    if (report.stage == SolveStage::Backoff)
+      std::fprintf(stderr, "==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====\n");
+    std::fprintf(stderr, "phase  step  %10s  %16s  %10s  newton  %9s  time[s]\n", "t", "objective", "gap", "lambda^2");
+    started_ = true;
+    stage_ = report.stage;
+  }
+  if (r.phase == 2 && r.centering == 0)
+    std::fprintf(stderr, "---- phase 2: minimise %s ----\n", report.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
+  std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
+               r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
+}
+
+}  // namespace hinf::cli

@@ -1,0 +1,67 @@
+// hinf-synth check CONFIG --golden GOLDEN.yaml [--rtol R]: regression of the synthesis.
+// The filters are compared as transfer functions (USER-PAIN #14): another state-space
+// realisation of the same filter passes; a real change fails. Because the optimal
+// filter is not unique, a golden filter whose transfer function differs is still
+// accepted when it remains certified for the config at the golden γ (within
+// min(rtol, 1e-6)): an equally optimal filter.
+#include <cmath>
+#include <iostream>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "hinf/certify/filter_compare.hpp"
+
+namespace hinf::cli {
+
+void add_check(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("check", "re-synthesise and compare with a golden gains file (exit 0 same, 1 changed)");
+  auto config = std::make_shared<std::string>();
+  auto golden = std::make_shared<std::string>();
+  auto rtol = std::make_shared<double>(1e-6);
+  cmd->add_option("config", *config, "config YAML")->required();
+  cmd->add_option("--golden", *golden, "golden gains YAML")->required();
+  cmd->add_option("--rtol", *rtol, "relative tolerance on gamma and on the filters' transfer-function difference")
+      ->check(CLI::Range(1e-14, 1.0));
+  cmd->callback([=, &action] {
+    action = [=]() -> int {
+      const synth::SynthConfig cfg = synth::load_config(*config);
+      const runtime_yaml::GainsFile g = runtime_yaml::load_gains_file(*golden);
+      const hinf::Filter gf = filter_from_gains(g, cfg.plant, *golden);
+      if (!g.gamma)
+        throw hinf::Error(hinf::ErrorCode::InvalidInput, *golden + ": golden file has no 'gamma'");
+      const synth::SynthesisResult r = synth::synthesize(cfg.plant, cfg.settings);
+      const double dg = std::abs(r.gamma - *g.gamma) / std::abs(*g.gamma);
+      const hinf::certify::FilterDifference fd = hinf::certify::compare_filters(gf, r.filter);
+      const bool same_gamma = dg <= *rtol;
+      bool same_filter = fd.relative <= *rtol;
+      std::string why;
+      if (!same_filter) {
+        // At the optimum the filter is not unique: rounding-level changes (another BLAS,
+        // compiler, platform) can move the synthesised filter along a flat direction of
+        // the bound. The golden filter is then still "the same" result if it is still
+        // certified, for this config, at the golden γ (within min(rtol, 1e-6)).
+        const double equal_tol = std::min(*rtol, 1e-6);
+        const synth::Certificate c =
+            synth::certify_filter(cfg.plant, gf, *g.gamma * (1 + equal_tol), cfg.settings);
+        same_filter = c.passed;
+        why = "        the golden filter on this config: nominal Hinf norm " + num(c.hinf_norm_nominal) +
+              ", robust analysis LMI " +
+              (c.robust_feasible_at_gamma ? "feasible" : "infeasible (best scaled norm " + num(c.robust_scaled_norm) + ")") +
+              " at the golden gamma" +
+              (same_filter ? ": an equally optimal filter (the optimum is not unique)\n" : "\n");
+      }
+      std::cout << "gamma:  golden " << num(*g.gamma) << ", now " << num(r.gamma) << ", relative change "
+                << num(dg) << (same_gamma ? "  ok" : "  CHANGED") << "\n"
+                << "filter: ||F_golden - F_now||_inf / ||F_golden||_inf = " << num(fd.relative)
+                << " (transfer functions y -> z_F)" << (same_filter ? "  ok" : "  CHANGED") << "\n"
+                << why;
+      if (!g.config_sha256.empty() && g.config_sha256 != cfg.sha256)
+        std::cout << "note: the golden file was generated from a config with another sha256 ("
+                  << g.config_sha256.substr(0, 12) << "... vs " << cfg.sha256.substr(0, 12) << "...)\n";
+      std::cout << (same_gamma && same_filter ? "same (rtol " + num(*rtol) + ")\n" : "CHANGED (rtol " + num(*rtol) + ")\n");
+      return same_gamma && same_filter ? 0 : 1;
+    };
+  });
+}
+
+}  // namespace hinf::cli

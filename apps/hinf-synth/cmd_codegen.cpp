@@ -1,0 +1,62 @@
+// hinf-synth codegen GAINS.yaml --prefix NAME --out DIR [--real double|float]
+// Writes DIR/NAME.h, DIR/NAME.c (the filter, C99), DIR/NAME_vectors.h and
+// DIR/NAME_check.c (test vectors and an on-target check driver). docs/codegen.md.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "hinf/runtime_yaml/gains_file.hpp"
+#include "hinf/codegen/codegen.hpp"
+
+#ifndef HINF_VERSION
+#error "HINF_VERSION must be defined by the build"
+#endif
+
+namespace hinf::cli {
+
+void add_codegen(CLI::App& app, Action& action) {
+  struct Args {
+    std::string gains;
+    std::string prefix;
+    std::string out;
+    std::string real = "double";
+    int vector_steps = 50;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "codegen", "Generate C99 code (no heap, no libm) for a filter from a gains file");
+  cmd->add_option("GAINS", args->gains, "Gains file (format hinf-gains/1)")->required();
+  cmd->add_option("--prefix", args->prefix,
+                  "Symbol and file prefix, a C identifier (e.g. nav_filter)")
+      ->required();
+  cmd->add_option("--out", args->out, "Output directory (created if missing)")->required();
+  cmd->add_option("--real", args->real, "Arithmetic type of the generated code")
+      ->check(CLI::IsMember({"double", "float"}))
+      ->capture_default_str();
+  cmd->add_option("--vector-steps", args->vector_steps,
+                  "Number of steps in the generated test vectors")
+      ->check(CLI::Range(1, 2000))
+      ->capture_default_str();
+  cmd->callback([args, &action] {
+    action = [args]() -> int {
+      hinf::codegen::CodegenOptions options;
+      options.prefix = args->prefix;
+      options.real = args->real == "float" ? hinf::codegen::CodegenOptions::Real::Float
+                                           : hinf::codegen::CodegenOptions::Real::Double;
+      options.generator = "hinf-synth " HINF_VERSION;
+      options.vector_steps = args->vector_steps;
+      hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
+      const runtime_yaml::GainsFile gains = runtime_yaml::load_gains_file(args->gains);
+      const hinf::codegen::GeneratedFiles files = hinf::codegen::generate_c(gains, options);
+      hinf::codegen::write_generated_files(files, args->out);
+      for (const auto& f : files.files)
+        std::cout << "wrote " << (std::filesystem::path(args->out) / f.name).lexically_normal().string()
+                  << "\n";
+      return 0;
+    };
+  });
+}
+
+}  // namespace hinf::cli

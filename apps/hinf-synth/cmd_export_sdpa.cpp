@@ -1,0 +1,31 @@
+// hinf-synth export-sdpa CONFIG -o FILE.dat-s
+#include <iostream>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "hinf/common/atomic_file.hpp"
+#include "hinf/synth/gains_output.hpp"
+
+namespace hinf::cli {
+
+void add_export_sdpa(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand("export-sdpa", "write the Theorem-1 LMI in SDPA sparse format (for CSDP, SDPA, ...)");
+  auto config = std::make_shared<std::string>();
+  auto output = std::make_shared<std::string>();
+  cmd->add_option("config", *config, "config YAML")->required();
+  cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write")->required();
+  cmd->callback([=, &action] {
+    action = [=]() -> int {
+      const synth::SynthConfig cfg = synth::load_config(*config);
+      const std::string text = synth::theorem1_sdpa(
+          cfg.plant, std::string("Theorem-1 LMI from ") + *config + " (sha256 " + cfg.sha256 +
+                         "), by hinf-synth " + synth::tool_version() +
+                         "\nminimise gamma^2; the SDPA dual objective is gamma*^2");
+      hinf::write_file_atomic(*output, text);
+      std::cout << "SDPA problem written to " << *output << "\n";
+      return 0;
+    };
+  });
+}
+
+}  // namespace hinf::cli

@@ -1,0 +1,28 @@
+// Dense, direct assembly of LMI (20) of SPEC §2 in the user's units, written
+// independently of the generic LMI layer the solver uses, so that the certificate
+// does not trust the solver's own data structures (SPEC §2: independent checks).
+#pragma once
+#include <Eigen/Dense>
+
+#include "hinf/models/plant.hpp"
+
+namespace hinf::certify {
+
+struct Theorem1Point {
+  Eigen::MatrixXd R, S, AF_bar, BF_bar, CF_bar;
+  double lambda = 0;  // unused without uncertainty
+  double g = 0;       // γ²
+};
+
+// LMI (20) of SPEC §2 at a point (blocks n, n, n, n, p, q, l[, j]).
+Eigen::MatrixXd theorem1_matrix(const hinf::Plant& plant, const Theorem1Point& x);
+
+struct DefinitenessCheck {
+  double max_eig = 0;           // largest eigenvalue of M (to relative accuracy when M ≺ 0)
+  double max_eig_relative = 0;  // max_eig / ‖M‖₂
+  // Cholesky of −M − margin·I, Jacobi-scaled (a congruence: same inertia), succeeded
+  bool negative_definite = false;
+};
+DefinitenessCheck check_negative_definite(const Eigen::MatrixXd& M, double margin);
+
+}  // namespace hinf::certify

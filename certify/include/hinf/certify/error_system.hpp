@@ -1,0 +1,17 @@
+// The filtering-error system of SPEC §1 (seed 000, eqs. 13–15): with ξ = [x; x_F],
+// τ = [w; v], e = z − z_F and a fixed admissible F (ΔA = H F E),
+//     Ā = [A + H F E, 0; B_F C, A_F],  B̄ = [B, 0; 0, B_F D],  C̄ = [L, −C_F],  D̄ = 0.
+#pragma once
+#include <Eigen/Dense>
+
+#include "hinf/models/plant.hpp"
+#include "hinf/models/state_space.hpp"
+
+namespace hinf::certify {
+
+// F is j×k; an empty F (0×0) means the nominal system ΔA = 0. Throws Error(InvalidInput)
+// on inconsistent dimensions of the plant, the filter or F.
+StateSpace error_system(const Plant& plant, const Filter& filter,
+                        const Eigen::MatrixXd& F = Eigen::MatrixXd());
+
+}  // namespace hinf::certify

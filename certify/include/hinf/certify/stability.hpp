@@ -1,0 +1,34 @@
+// Schur stability of a matrix and sampled robust stability of the error system of
+// SPEC §1 over admissible uncertainties F (FᵀF ≤ I), certificate check 2 of SPEC §2.
+// Sampling is evidence, not proof: the robust guarantee is the analysis LMI (check 4).
+#pragma once
+#include <Eigen/Dense>
+#include <vector>
+
+#include "hinf/models/plant.hpp"
+
+namespace hinf::certify {
+
+// ρ(M) = max |λ_i(M)| (0 for an empty matrix). Throws Error(InvalidInput) if M is not
+// square or not finite, Error(NumericalFailure) if the eigenvalue iteration fails.
+double spectral_radius(const Eigen::MatrixXd& M);
+
+struct StabilitySample {
+  double max_spectral_radius = 0;  // max over the samples of ρ(Ā(F))
+  int samples = 0;                 // number of F evaluated (nominal included)
+  Eigen::MatrixXd worst_F;         // the F attaining max_spectral_radius (j×k)
+};
+
+// ρ(Ā(F)) for F = 0; F = ±I (j×k, padded); F = ±e_a e_bᵀ for every (a, b); and
+// `random_samples` random F = G/σ_max(G), G a j×k standard Gaussian matrix drawn from
+// std::mt19937_64(seed) by the Box–Muller transform (deterministic on every platform).
+// Without uncertainty (j = 0 or k = 0) only the nominal error system is evaluated.
+StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
+                                         int random_samples, unsigned seed);
+
+// ρ(Ā(F)) for each F in `Fs` (each j×k with ‖F‖₂ ≤ 1 + 1e-12, else Error(InvalidInput)).
+// The nominal F = 0 is NOT added implicitly.
+StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
+                                         const std::vector<Eigen::MatrixXd>& Fs);
+
+}  // namespace hinf::certify

@@ -1,0 +1,49 @@
+// C99 code generation for a synthesised filter (`hinf-synth codegen`).
+//
+// The generated code is data plus a fixed step, in the style of OSQP's generated
+// code: no heap, no recursion, no libm, fixed loop bounds, static const data and a
+// symbol prefix so that several filters link into one binary. Generation is pure
+// (file names and contents in memory); writing them is a separate, atomic step.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hinf/runtime_yaml/gains_file.hpp"
+
+namespace hinf::codegen {
+
+struct CodegenOptions {
+  enum class Real { Double, Float };
+
+  std::string prefix;                 // C identifier, see validate_codegen_prefix
+  Real real = Real::Double;           // arithmetic and storage type of the code
+  std::string generator = "hinf-synth";  // provenance, e.g. "hinf-synth 0.1.0"
+  int vector_steps = 50;              // length N of the test-vector sequence
+  std::uint64_t vector_seed = 0x48494e46u;  // seed of the test-vector inputs ("HINF")
+};
+
+struct GeneratedFile {
+  std::string name;      // file name only (no directory), e.g. "nav.h"
+  std::string contents;
+};
+
+struct GeneratedFiles {
+  std::vector<GeneratedFile> files;  // NAME.h, NAME.c, NAME_vectors.h, NAME_check.c
+};
+
+// Throws Error(InvalidInput) naming the rule when `prefix` cannot be used as the
+// symbol/file prefix (not a C identifier, C/C++ keyword, reserved name, too long).
+void validate_codegen_prefix(const std::string& prefix);
+
+// Generates the four files for `gains` (SPEC eq. 12). Throws Error(InvalidInput)
+// for a bad prefix or options, or coefficients that do not fit the real type, and
+// Error(NumericalFailure) if the test vectors overflow (a violently unstable filter).
+GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOptions& options);
+
+// Writes every file into `directory` (created if missing). All files are first
+// written to temporary files in `directory` and then renamed, so a failure leaves
+// no partial file behind. Throws Error(InvalidInput) naming the path on failure.
+void write_generated_files(const GeneratedFiles& files, const std::string& directory);
+
+}  // namespace hinf::codegen

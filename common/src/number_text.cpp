@@ -1,0 +1,39 @@
+#include "hinf/common/number_text.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace hinf {
+
+std::string number_text(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (value == 0) return std::signbit(value) ? "-0" : "0";
+  // fewest significant digits that read back exactly
+  char buf[48];
+  int digits = 1;
+  for (; digits < 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    if (std::strtod(buf, nullptr) == value) break;
+  }
+  // %g switches to an exponent once the exponent reaches the digit count ("1e+01" for 10);
+  // integers and plain decimals up to 1e15 read better without one.
+  const int exponent = static_cast<int>(std::floor(std::log10(std::abs(value))));
+  if (exponent >= digits && exponent < 16) digits = exponent + 1;
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  // "7.2722e-05" -> "7.2722e-5", "1e+20" -> "1e20"
+  std::string text = buf;
+  const size_t e = text.find('e');
+  if (e != std::string::npos) {
+    std::string mantissa = text.substr(0, e);
+    std::string exp = text.substr(e + 1);
+    const bool negative = exp[0] == '-';
+    size_t first = 1;
+    while (first + 1 < exp.size() && exp[first] == '0') ++first;
+    text = mantissa + "e" + (negative ? "-" : "") + exp.substr(first);
+  }
+  return text;
+}
+
+}  // namespace hinf

@@ -1,0 +1,54 @@
+// Generic linear discrete-time model and measurement, fixed size:
+//     x(k+1) = F x(k) + G u(k),     y(k) = H x(k)
+// They satisfy the process/measurement interfaces used by Ekf and Rekf (see ekf.hpp).
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace hinf::models {
+
+template <int NX_, int NU_>
+class LinearModel {
+  static_assert(NX_ > 0 && NU_ > 0, "LinearModel: dimensions must be positive");
+
+ public:
+  static constexpr int NX = NX_;
+  static constexpr int NU = NU_;
+  using State = Eigen::Matrix<double, NX, 1>;
+  using Input = Eigen::Matrix<double, NU, 1>;
+  using StateMatrix = Eigen::Matrix<double, NX, NX>;
+  using InputMatrix = Eigen::Matrix<double, NX, NU>;
+
+  LinearModel(const StateMatrix& F, const InputMatrix& G) : F_(F), G_(G) {}
+
+  State f(const State& x, const Input& u) const { return F_ * x + G_ * u; }
+  const StateMatrix& F(const State& /*x*/, const Input& /*u*/) const { return F_; }
+  const InputMatrix& G() const { return G_; }
+
+ private:
+  StateMatrix F_;
+  InputMatrix G_;
+};
+
+template <int NX_, int NZ_>
+class LinearMeasurement {
+  static_assert(NX_ > 0 && NZ_ > 0, "LinearMeasurement: dimensions must be positive");
+
+ public:
+  static constexpr int NX = NX_;
+  static constexpr int NZ = NZ_;
+  using State = Eigen::Matrix<double, NX, 1>;
+  using Vector = Eigen::Matrix<double, NZ, 1>;
+  using Jacobian = Eigen::Matrix<double, NZ, NX>;
+
+  explicit LinearMeasurement(const Jacobian& H) : H_(H) {}
+
+  Vector h(const State& x) const { return H_ * x; }
+  const Jacobian& H(const State& /*x*/) const { return H_; }
+  Vector residual(const Vector& y, const Vector& y_pred) const { return y - y_pred; }
+
+ private:
+  Jacobian H_;
+};
+
+}  // namespace hinf::models

@@ -1,0 +1,63 @@
+// The barrier interior-point method for   minimise cᵀx  subject to  M(x) ⪯ −εI,  ‖x‖ < ρ
+// (docs/maths.md §4). Phase I finds a strictly feasible point (minimise s with
+// M(x) + εI ⪯ sI until s < 0); phase II follows the central path x*(t) of
+// f_t = t·cᵀx + φ(x) with t ← μ·t, a tangent predictor, and Newton centring (Ipopt, then
+// QR Newton steps at the end of the path), until the certified gap is below
+// relative_gap_tol·|cᵀx|. Knows nothing of the application that built the LMI.
+#pragma once
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+
+#include "hinf/lmi/lmi_problem.hpp"
+#include "hinf/sdp/status.hpp"
+
+namespace hinf::sdp {
+
+// The solver's own options (as Ceres's Minimizer::Options), built by the caller from its
+// settings; each field's meaning and default is documented here once.
+struct Options {
+  double lmi_margin = 1e-9;              // ε: the solver enforces −M(x) ⪰ ε·I
+  double relative_gap_tol = 1e-7;        // stop when the certified gap ≤ this·|cᵀx|
+  double barrier_growth = 50.0;          // μ: t grows by at most this factor per centring
+  double feasibility_radius = 1e8;       // ρ: the ball ‖x‖ < ρ that bounds the barrier
+  int max_newton_per_centering = 60;     // Newton iterations allowed in one centring
+  int max_iterations = 600;              // Newton iterations allowed in one solve (I + II)
+  double time_limit_s = 600.0;           // wall-clock limit of one solve
+};
+
+// One centring of the path, for an iteration table.
+struct Progress {
+  int phase = 2;           // 1: finding a strictly feasible point, 2: minimising cᵀx
+  int centering = 0;       // outer (barrier-parameter) step
+  double t = 0;            // barrier parameter
+  double objective = 0;    // cᵀx (phase 2) or the infeasibility s (phase 1)
+  double gap = 0;          // bound on objective − optimum at this point
+  int newton = 0;          // Newton iterations in this centring
+  double lambda2 = 0;      // Newton decrement² at its end
+  double elapsed_s = 0;
+};
+using ProgressObserver = std::function<void(const Progress&)>;
+
+struct Solution {
+  Eigen::VectorXd x;
+  Status status = Status::NotRun;
+  std::string detail;            // human-readable reason for a non-Solved status
+  int newton_total = 0, newton_phase1 = 0, centerings = 0;
+  double t = 0;
+  double objective = 0;          // cᵀx
+  double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (32))
+  double relative_gap = 0;       // gap/|cᵀx|
+  double dual_bound = 0;         // tr(W M₀)/t with the margin removed: ≈ lower bound on p*
+  double elapsed_s = 0;
+};
+
+// x0: optional starting point (size 0 = zero vector).
+Solution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c, const Options& options,
+                         const Eigen::VectorXd& x0 = Eigen::VectorXd(),
+                         const ProgressObserver& observer = nullptr);
+
+// The version of the Newton engine (Ipopt) the solver was built with, for provenance.
+const char* newton_engine_version();
+
+}  // namespace hinf::sdp

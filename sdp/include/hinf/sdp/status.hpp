@@ -1,0 +1,18 @@
+// How the interior-point method ended, with its message table. An internal fact of the
+// solver, kept apart from hinf::ErrorCode (what the user sees).
+#pragma once
+
+namespace hinf::sdp {
+
+enum class Status {
+  Solved,          // certified relative gap below tolerance
+  Infeasible,      // phase I ended with a certified positive minimal violation
+  MaxIterations,   // Newton-iteration limit hit
+  TimeLimit,       // wall-clock limit hit
+  NumericalError,  // the barrier could not be centred (round-off, engine failure)
+  NotRun
+};
+
+const char* status_message(Status status);
+
+}  // namespace hinf::sdp

@@ -1,0 +1,18 @@
+// Message table of sdp::Status (status.hpp).
+#include "hinf/sdp/status.hpp"
+
+namespace hinf::sdp {
+
+const char* status_message(Status status) {
+  switch (status) {
+    case Status::Solved: return "solved: relative gap below tolerance";
+    case Status::Infeasible: return "infeasible: phase I ended with a positive minimal violation";
+    case Status::MaxIterations: return "iteration limit reached";
+    case Status::TimeLimit: return "time limit reached";
+    case Status::NumericalError: return "numerical error: the barrier could not be centred";
+    case Status::NotRun: return "not run";
+  }
+  return "unknown solver status";
+}
+
+}  // namespace hinf::sdp

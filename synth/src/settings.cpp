@@ -1,0 +1,69 @@
+// Admissible ranges of the solver settings (settings.hpp). Each message names the field
+// as it is spelt in a config's `solver:` section, and the offending value.
+#include <cmath>
+#include <string>
+
+#include "hinf/common/number_text.hpp"
+#include "hinf/synth/settings.hpp"
+#include "hinf/common/error.hpp"
+
+namespace hinf::synth {
+namespace {
+
+// Below this the strictness margin is lost in the rounding of the Cholesky test of
+// −M(x) − εI (M of order ~1 after equilibration): a "strict" LMI would silently become
+// non-strict (USER-PAIN #3).
+constexpr double kSolverTolerance = 1e-14;
+
+[[noreturn]] void fail(const char* field, const std::string& value, const std::string& why) {
+  throw Error(ErrorCode::InvalidInput,
+              std::string("solver.") + field + " = " + value + ": " + why);
+}
+
+void require_finite(const char* field, double v) {
+  if (!std::isfinite(v)) fail(field, number_text(v), "must be finite");
+}
+
+}  // namespace
+
+void Settings::validate() const {
+  require_finite("lmi_margin", lmi_margin);
+  if (!(lmi_margin > 0)) fail("lmi_margin", number_text(lmi_margin), "must be > 0");
+  if (lmi_margin < kSolverTolerance)
+    fail("lmi_margin", number_text(lmi_margin),
+         "below solver tolerance (must be >= " + number_text(kSolverTolerance) +
+             ", or the strict LMI is not enforced)");
+  if (lmi_margin > 1e-2) fail("lmi_margin", number_text(lmi_margin), "must be <= 0.01");
+
+  require_finite("relative_gap_tol", relative_gap_tol);
+  if (relative_gap_tol < 1e-12 || relative_gap_tol > 1e-2)
+    fail("relative_gap_tol", number_text(relative_gap_tol), "must be in [1e-12, 0.01]");
+
+  require_finite("barrier_growth", barrier_growth);
+  if (!(barrier_growth > 1.5)) fail("barrier_growth", number_text(barrier_growth), "must be > 1.5");
+  if (barrier_growth > 1e6) fail("barrier_growth", number_text(barrier_growth), "must be <= 1e6");
+
+  require_finite("feasibility_radius", feasibility_radius);
+  if (feasibility_radius < 1 || feasibility_radius > 1e15)
+    fail("feasibility_radius", number_text(feasibility_radius), "must be in [1, 1e15]");
+
+  if (max_newton_per_centering < 1 || max_newton_per_centering > 10000)
+    fail("max_newton_per_centering", std::to_string(max_newton_per_centering),
+         "must be in [1, 10000]");
+  if (max_iterations < 1 || max_iterations > 1000000)
+    fail("max_iterations", std::to_string(max_iterations), "must be in [1, 1000000]");
+
+  require_finite("time_limit_s", time_limit_s);
+  if (!(time_limit_s > 0)) fail("time_limit_s", number_text(time_limit_s), "must be > 0");
+
+  require_finite("gamma_backoff", gamma_backoff);
+  if (gamma_backoff < 0 || gamma_backoff > 1)
+    fail("gamma_backoff", number_text(gamma_backoff),
+         "must be in [0, 1] (0 = off; 0.01 means gamma = 1.01 gamma*)");
+
+  if (stability_samples < 0 || stability_samples > 1000000)
+    fail("stability_samples", std::to_string(stability_samples), "must be in [0, 1000000]");
+  // seed: every unsigned value is admissible; verbose: a bool.
+}
+
+}  // namespace hinf::synth

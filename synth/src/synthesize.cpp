@@ -1,0 +1,288 @@
+// The synthesis pipeline (SPEC §2): pre-flight checks, Theorem 1 / Corollary 1 by the
+// barrier method, recovery (eq. 21), and the independent certificate.
+#include <cmath>
+#include <sstream>
+
+#include "hinf/synth/validate_plant.hpp"
+#include "hinf/sdp/path_following.hpp"
+#include "hinf/lmi/sdpa_format.hpp"
+#include "hinf/certify/dense_lmi.hpp"
+#include "hinf/certify/scaled_bounded_real.hpp"
+#include "hinf/certify/error_system.hpp"
+#include "hinf/certify/hinf_norm.hpp"
+#include "hinf/certify/stability.hpp"
+#include "hinf/synth/synthesis.hpp"
+#include "theorem1.hpp"
+
+namespace hinf::synth {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+
+// Pre-flight (USER-PAIN #10): the error system contains the plant state, so the plant
+// must be Schur stable for every admissible F (SPEC §1). Name the offending mode.
+void preflight(const Plant& plant, const Settings& settings) {
+  const Eigen::EigenSolver<MatrixXd> es(plant.A, false);
+  const Eigen::VectorXcd ev = es.eigenvalues();
+  int worst = 0;
+  for (int i = 1; i < ev.size(); ++i)
+    if (std::abs(ev(i)) > std::abs(ev(worst))) worst = i;
+  const double rho = std::abs(ev(worst));
+  if (!(rho < 1.0)) {
+    throw Error(ErrorCode::Infeasible,
+                "plant is not Schur stable: spectral radius of A is " + fmt(rho) + " (eigenvalue " +
+                    fmt(ev(worst).real()) + (ev(worst).imag() >= 0 ? " + " : " - ") +
+                    fmt(std::abs(ev(worst).imag())) +
+                    "i); the filtering error contains the plant state, so no filter can make it "
+                    "stable (SPEC §1)");
+  }
+  if (plant.uncertain()) {
+    // The zero filter's error system has the plant's A + HFE as its top-left block.
+    Filter zero{MatrixXd::Zero(plant.n(), plant.n()), MatrixXd::Zero(plant.n(), plant.m()),
+                MatrixXd::Zero(plant.l(), plant.n())};
+    const certify::StabilitySample s =
+        certify::sampled_robust_stability(plant, zero, settings.stability_samples, settings.seed);
+    if (!(s.max_spectral_radius < 1.0)) {
+      throw Error(ErrorCode::Infeasible,
+                  "plant is not robustly Schur stable: for an admissible F (‖F‖ ≤ 1) the spectral "
+                  "radius of A + H F E is " + fmt(s.max_spectral_radius) +
+                  " (nominal " + fmt(rho) + "); reduce the uncertainty (H, E) or stabilise the plant");
+    }
+  }
+}
+
+// The solver's own options from the user's settings (as Ceres builds Minimizer::Options).
+sdp::Options solver_options(const Settings& settings) {
+  sdp::Options o;
+  o.lmi_margin = settings.lmi_margin;
+  o.relative_gap_tol = settings.relative_gap_tol;
+  o.barrier_growth = settings.barrier_growth;
+  o.feasibility_radius = settings.feasibility_radius;
+  o.max_newton_per_centering = settings.max_newton_per_centering;
+  o.max_iterations = settings.max_iterations;
+  o.time_limit_s = settings.time_limit_s;
+  return o;
+}
+
+ErrorCode error_code_for(sdp::Status status) {
+  return status == sdp::Status::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
+}
+
+// The robust analysis LMI (SPEC §2, eq. 17 with the S-procedure) for a fixed filter,
+// minimising γ² by the barrier method (`analyze`; the certificate uses the bounded-real
+// form of the same LMI instead, certify/scaled_bounded_real.hpp). Returns γ².
+double solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
+  AnalysisLmi A = build_analysis_lmi(plant, filter, he_balance(plant));
+  const VectorXd c = A.lmi.cost_of(A.g);
+  const sdp::Solution sol = sdp::minimize_linear(A.lmi, c, solver_options(settings));
+  if (sol.status != sdp::Status::Solved)
+    throw Error(error_code_for(sol.status), "robust analysis LMI (SPEC §2 check 4): " +
+                                                std::string(sdp::status_message(sol.status)) +
+                                                (sol.detail.empty() ? "" : ": " + sol.detail));
+  return sol.objective;
+}
+
+}  // namespace
+
+double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings) {
+  validate_plant(plant);
+  settings.validate();
+  return std::sqrt(solve_analysis(plant, filter, settings));
+}
+
+namespace {
+// Checks 2–4 of SPEC §2 at γ; none uses the synthesis solver's numbers (SPEC §2).
+Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings) {
+  Certificate c;
+  c.gamma = gamma;
+  c.norm_A_F = filter.A_F.norm();
+  c.norm_B_F = filter.B_F.norm();
+  c.norm_C_F = filter.C_F.norm();
+  // check 2: Schur stability, nominal and sampled admissible F
+  const StateSpace es = certify::error_system(plant, filter);  // nominal (F = 0)
+  c.spectral_radius_nominal = certify::spectral_radius(es.A);
+  const certify::StabilitySample ss =
+      certify::sampled_robust_stability(plant, filter, settings.stability_samples, settings.seed);
+  c.spectral_radius_sampled_max = ss.max_spectral_radius;
+  c.stability_samples = ss.samples;
+  c.schur_stable = c.spectral_radius_nominal < 1 && ss.max_spectral_radius < 1;
+  if (!c.schur_stable) return c;  // the norms below are undefined
+  // check 3: nominal H∞ norm by the symplectic-pencil algorithm (no LMI, no grid)
+  const certify::HinfNorm hn = certify::discrete_hinf_norm(es, 1e-10);
+  c.hinf_norm_nominal = hn.norm;
+  c.hinf_norm_peak_frequency = hn.peak_frequency;
+  c.hinf_norm_ok = hn.norm <= gamma;
+  // check 4: the robust analysis LMI at γ, decided by the bounded-real lemma with the
+  // best S-procedure multiplier (no SDP solver involved; certify/scaled_bounded_real.hpp)
+  certify::ScaledBoundedReal robust(plant, es);
+  const certify::ScaledBoundedRealTest br = robust.test(gamma);
+  c.robust_feasible_at_gamma = br.feasible;
+  c.robust_multiplier = br.lambda;
+  c.robust_scaled_norm = br.scaled_norm;
+  // (to 1e-7 relative, rounded up: it is reported, not used)
+  c.robust_bound = br.feasible ? robust.gamma_at_multiplier(br.lambda, hn.norm, gamma, 1e-7) : INFINITY;
+  c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
+  return c;
+}
+}  // namespace
+
+Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
+                           const Settings& settings) {
+  validate_plant(plant);
+  settings.validate();
+  return certify(plant, filter, gamma, settings);
+}
+
+namespace {
+
+// The solver's progress tagged with the SDP it belongs to (null stays null).
+sdp::ProgressObserver staged(const IterationObserver& observer, SolveStage stage) {
+  if (!observer) return nullptr;
+  return [observer, stage](const sdp::Progress& p) { observer(IterationReport{stage, p}); };
+}
+
+// Corollary 1: minimise γ² subject to LMI (20). Throws with the solver's reason if it
+// does not end Solved.
+sdp::Solution solve_corollary1(const Theorem1Lmi& T, const Settings& settings,
+                               const IterationObserver& observer) {
+  const VectorXd c = T.lmi.cost_of(T.g);
+  sdp::Solution sol = sdp::minimize_linear(T.lmi, c, solver_options(settings), VectorXd(),
+                                           staged(observer, SolveStage::Synthesis));
+  if (sol.status == sdp::Status::Solved) return sol;
+  const ErrorCode code = error_code_for(sol.status);
+  std::string msg = std::string("Theorem 1 LMI: ") + sdp::status_message(sol.status);
+  if (!sol.detail.empty()) msg += ": " + sol.detail;
+  if (code == ErrorCode::Infeasible)
+    msg += " (the plant is Schur stable, so the uncertainty bound H, E is too large for a "
+           "quadratic certificate)";
+  throw Error(code, msg);
+}
+
+// The γ back-off (docs/maths.md §6): at γ_b² = (1 + b)²·γ*², the point of largest LMI
+// margin, which keeps S and R − S away from singular and the recovered gains moderate.
+// The margin only has to be near its maximum (a well-centred point, not a digit count):
+// relative accuracy 1e-3. At the solver's 1e-7 a margin of ~1e-6 would ask for an
+// absolute gap of 1e-13, below round-off.
+constexpr double kBackoffRelativeGap = 1e-3;
+
+sdp::Solution solve_backoff(const Theorem1Lmi& Tb, double gamma2_backoff, const Settings& settings,
+                            const IterationObserver& observer) {
+  sdp::Options options = solver_options(settings);
+  options.relative_gap_tol = std::max(settings.relative_gap_tol, kBackoffRelativeGap);
+  const sdp::Solution sol = sdp::minimize_linear(Tb.lmi, Tb.lmi.cost_of(Tb.margin), options, VectorXd(),
+                                                 staged(observer, SolveStage::Backoff));
+  if (sol.status != sdp::Status::Solved || !(sol.objective < 0))
+    throw Error(ErrorCode::NumericalFailure,
+                std::string("gamma back-off: maximising the LMI margin at γ = ") + fmt(std::sqrt(gamma2_backoff)) +
+                    " failed: " + sdp::status_message(sol.status) + (sol.detail.empty() ? "" : ": " + sol.detail));
+  return sol;
+}
+
+// Checks 1–4 of the certificate (docs/maths.md §5) at the returned point. Only the
+// rounding of the recovery (S⁻¹ near the boundary) can make the recovered filter miss
+// check 4 by a hair; then it is tried once more at (1 + relative_gap_tol)·γ², still
+// within the solver's accuracy.
+void certify_result(const Plant& plant, const certify::Theorem1Point& pt, const Settings& settings,
+                    SynthesisResult& res) {
+  // check 1: LMI (20) at the returned point (with g = certified γ²), assembled densely
+  const certify::DefinitenessCheck lmi_check =
+      certify::check_negative_definite(certify::theorem1_matrix(plant, pt), 0.0);
+  res.gamma_squared = pt.g;
+  res.certificate = certify(plant, res.filter, std::sqrt(pt.g), settings);
+  if (res.certificate.schur_stable && !res.certificate.robust_feasible_at_gamma) {
+    res.gamma_squared = pt.g * (1 + settings.relative_gap_tol);
+    res.certificate = certify(plant, res.filter, std::sqrt(res.gamma_squared), settings);
+  }
+  res.gamma = std::sqrt(res.gamma_squared);
+  Certificate& cert = res.certificate;
+  cert.lmi_max_eig = lmi_check.max_eig;
+  cert.lmi_max_eig_relative = lmi_check.max_eig_relative;
+  cert.lmi_negative_definite = lmi_check.negative_definite;
+  const VectorXd eig_S = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.S, Eigen::EigenvaluesOnly).eigenvalues();
+  const VectorXd eig_RS =
+      Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.R - pt.S, Eigen::EigenvaluesOnly).eigenvalues();
+  cert.cond_S = eig_S(eig_S.size() - 1) / eig_S(0);
+  cert.cond_R_minus_S = eig_RS(0) > 0 ? eig_RS(eig_RS.size() - 1) / eig_RS(0) : INFINITY;
+  cert.passed = cert.passed && cert.lmi_negative_definite;
+}
+
+// Why a certificate failed, check by check.
+std::string failed_checks(const Certificate& cert, double gamma) {
+  std::string why;
+  if (!cert.lmi_negative_definite) why += " LMI (20) not negative definite (max eigenvalue " + fmt(cert.lmi_max_eig) + ");";
+  if (!cert.schur_stable)
+    why += " error system not Schur stable (spectral radius " +
+           fmt(std::max(cert.spectral_radius_nominal, cert.spectral_radius_sampled_max)) + ");";
+  if (cert.schur_stable && !cert.hinf_norm_ok)
+    why += " nominal H∞ norm " + fmt(cert.hinf_norm_nominal) + " > γ " + fmt(gamma) + ";";
+  if (cert.schur_stable && !cert.robust_feasible_at_gamma) why += " robust analysis LMI infeasible at γ;";
+  return why;
+}
+
+}  // namespace
+
+SynthesisResult synthesize(const Plant& plant, const Settings& settings, const IterationObserver& observer) {
+  validate_plant(plant);
+  settings.validate();
+  preflight(plant, settings);
+
+  const double s = he_balance(plant);
+  const Theorem1Lmi T = build_theorem1(plant, s);
+  const sdp::Solution sol = solve_corollary1(T, settings, observer);
+
+  SynthesisResult res;
+  res.solver.status = sol.status;
+  res.solver.newton_iterations = sol.newton_total;
+  res.solver.phase1_iterations = sol.newton_phase1;
+  res.solver.centerings = sol.centerings;
+  res.solver.relative_gap = sol.relative_gap;
+  res.solver.dual_bound_gamma_squared = sol.objective - sol.gap;
+  res.solver.he_balance = s;
+  res.solver.lmi_margin = settings.lmi_margin;
+  res.solver.time_s = sol.elapsed_s;
+  res.solver.lmi_order = T.lmi.order();
+  res.solver.variables = T.lmi.num_params();
+  res.solver.optimal_gamma = std::sqrt(sol.objective);
+
+  certify::Theorem1Point pt;
+  if (settings.gamma_backoff > 0) {
+    const double gamma2_backoff = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
+    const Theorem1Lmi Tb = build_theorem1_backoff(plant, s, gamma2_backoff);
+    const sdp::Solution sb = solve_backoff(Tb, gamma2_backoff, settings, observer);
+    res.solver.newton_iterations += sb.newton_total;
+    res.solver.time_s += sb.elapsed_s;
+    pt = theorem1_point(Tb, plant, sb.x, gamma2_backoff);
+  } else {
+    pt = theorem1_point(T, plant, sol.x, sol.objective);
+  }
+  res.filter = recover_filter(pt);
+  certify_result(plant, pt, settings, res);
+  if (!res.certificate.passed)
+    throw Error(ErrorCode::NumericalFailure,
+                "certificate failed, no filter written:" + failed_checks(res.certificate, res.gamma));
+  return res;
+}
+
+SynthesisResult synthesize(const Plant& plant, const Settings& settings) {
+  return synthesize(plant, settings, nullptr);
+}
+
+std::string theorem1_sdpa(const Plant& plant, const std::string& comment) {
+  validate_plant(plant);
+  const double s = he_balance(plant);
+  Theorem1Lmi T = build_theorem1(plant, s);
+  const VectorXd c = T.lmi.cost_of(T.g);
+  return lmi::to_sdpa_sparse(T.lmi, c, comment + "\nvariable " + std::to_string(T.lmi.variable(T.g).offset + 1) +
+                                           " is gamma^2; H/E balance s = " + std::to_string(s));
+}
+
+}  // namespace hinf::synth

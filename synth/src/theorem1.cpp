@@ -1,0 +1,151 @@
+#include "theorem1.hpp"
+
+#include <cmath>
+
+#include "hinf/common/error.hpp"
+
+namespace hinf::synth {
+
+using Eigen::MatrixXd;
+using hinf::Filter;
+using hinf::Plant;
+
+double he_balance(const Plant& plant) {
+  if (!plant.uncertain()) return 1.0;
+  const double h = plant.H.norm(), e = plant.E.norm();
+  if (!(h > 0) || !(e > 0)) return 1.0;
+  return std::sqrt(e / h);
+}
+
+namespace {
+Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
+  const bool unc = P.uncertain();
+  std::vector<int> blocks{n, n, n, n, p, q, l};
+  if (unc) blocks.push_back(P.j());
+  Theorem1Lmi T;
+  T.lmi = lmi::LmiProblem(blocks);
+  T.he_scale = s;
+  auto& M = T.lmi;  // M(x), docs/maths.md (20)
+  T.R = M.add_symmetric("R", n);
+  T.S = M.add_symmetric("S", n);
+  T.AFbar = M.add_full("AF_bar", n, n);
+  T.BFbar = M.add_full("BF_bar", n, m);
+  T.CFbar = M.add_full("CF_bar", l, n);
+  if (unc) T.lambda = M.add_scalar("lambda");
+  if (!g_fixed) T.g = M.add_scalar("gamma_squared");
+  else T.margin = M.add_scalar("margin");
+
+  const MatrixXd In = MatrixXd::Identity(n, n);
+  const MatrixXd Hs = s * P.H, Es = P.E / s;
+  // row 1:  [ −R  −S  RA+B̄_F C  Ā_F  RB  B̄_F D  0  RH ]
+  M.add_term(0, 0, T.R, -In, In);
+  M.add_term(0, 1, T.S, -In, In);
+  M.add_term(0, 2, T.R, In, P.A);
+  M.add_term(0, 2, T.BFbar, In, P.C);
+  M.add_term(0, 3, T.AFbar, In, In);
+  M.add_term(0, 4, T.R, In, P.B);
+  M.add_term(0, 5, T.BFbar, In, P.D);
+  if (unc) M.add_term(0, 7, T.R, In, Hs);
+  // row 2:  [ ∗  −S  SA+B̄_F C  Ā_F  SB  B̄_F D  0  SH ]
+  M.add_term(1, 1, T.S, -In, In);
+  M.add_term(1, 2, T.S, In, P.A);
+  M.add_term(1, 2, T.BFbar, In, P.C);
+  M.add_term(1, 3, T.AFbar, In, In);
+  M.add_term(1, 4, T.S, In, P.B);
+  M.add_term(1, 5, T.BFbar, In, P.D);
+  if (unc) M.add_term(1, 7, T.S, In, Hs);
+  // row 3:  [ ∗  ∗  −R+λEᵀE  −S  0  0  Lᵀ  0 ]
+  M.add_term(2, 2, T.R, -In, In);
+  if (unc) M.add_scalar_term(2, 2, T.lambda, Es.transpose() * Es);
+  M.add_term(2, 3, T.S, -In, In);
+  M.add_constant(2, 6, P.L.transpose());
+  // row 4:  [ ∗  ∗  ∗  −S  0  0  −C̄_Fᵀ  0 ]
+  M.add_term(3, 3, T.S, -In, In);
+  M.add_term(3, 6, T.CFbar, -In, MatrixXd::Identity(l, l), /*transpose=*/true);
+  // rows 5–8: −gI, −gI, −I, −λI
+  if (g_fixed) {
+    M.add_constant(4, 4, -*g_fixed * MatrixXd::Identity(p, p));
+    M.add_constant(5, 5, -*g_fixed * MatrixXd::Identity(q, q));
+    for (int b = 0; b < M.num_blocks(); ++b)
+      M.add_scalar_term(b, b, T.margin, -MatrixXd::Identity(M.block_size(b), M.block_size(b)));
+  } else {
+    M.add_scalar_term(4, 4, T.g, -MatrixXd::Identity(p, p));
+    M.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
+  }
+  M.add_constant(6, 6, -MatrixXd::Identity(l, l));
+  if (unc) M.add_scalar_term(7, 7, T.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  return T;
+}
+}  // namespace
+
+Theorem1Lmi build_theorem1(const Plant& P, double s) { return build(P, s, nullptr); }
+
+Theorem1Lmi build_theorem1_backoff(const Plant& P, double s, double g_fixed) {
+  return build(P, s, &g_fixed);
+}
+
+certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, const Eigen::VectorXd& x,
+                                      double g) {
+  certify::Theorem1Point pt;
+  pt.R = T.lmi.value(T.R, x);
+  pt.S = T.lmi.value(T.S, x);
+  pt.AF_bar = T.lmi.value(T.AFbar, x);
+  pt.BF_bar = T.lmi.value(T.BFbar, x);
+  pt.CF_bar = T.lmi.value(T.CFbar, x);
+  pt.lambda = plant.uncertain() ? x(T.lmi.variable(T.lambda).offset) / (T.he_scale * T.he_scale) : 0.0;
+  pt.g = g;
+  return pt;
+}
+
+Filter recover_filter(const certify::Theorem1Point& pt) {
+  const Eigen::LLT<MatrixXd> S(pt.S);
+  if (S.info() != Eigen::Success)
+    throw Error(ErrorCode::NumericalFailure, "recovery: S is not positive definite at the solution");
+  return Filter{S.solve(pt.AF_bar), S.solve(pt.BF_bar), pt.CF_bar};
+}
+
+AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
+  const bool unc = P.uncertain();
+  const int n2 = 2 * n;
+  // error system, SPEC eqs. (13)–(15)
+  MatrixXd A0 = MatrixXd::Zero(n2, n2);
+  A0.topLeftCorner(n, n) = P.A;
+  A0.bottomLeftCorner(n, n) = F.B_F * P.C;
+  A0.bottomRightCorner(n, n) = F.A_F;
+  MatrixXd Bb = MatrixXd::Zero(n2, p + q);
+  Bb.topLeftCorner(n, p) = P.B;
+  Bb.bottomRightCorner(n, q) = F.B_F * P.D;
+  MatrixXd Cb(l, n2);
+  Cb << P.L, -F.C_F;
+  std::vector<int> blocks{n2, n2, p + q, l};
+  if (unc) blocks.push_back(P.j());
+  AnalysisLmi A;
+  A.lmi = lmi::LmiProblem(blocks);
+  A.he_scale = s;
+  auto& M = A.lmi;  // M(x), docs/maths.md (20)
+  A.P = M.add_symmetric("P", n2);
+  if (unc) A.lambda = M.add_scalar("lambda");
+  A.g = M.add_scalar("gamma_squared");
+  const MatrixXd I2 = MatrixXd::Identity(n2, n2);
+  M.add_term(0, 0, A.P, -I2, I2);
+  M.add_term(0, 1, A.P, I2, A0);
+  M.add_term(0, 2, A.P, I2, Bb);
+  M.add_term(1, 1, A.P, -I2, I2);
+  M.add_constant(1, 3, Cb.transpose());
+  M.add_scalar_term(2, 2, A.g, -MatrixXd::Identity(p + q, p + q));
+  M.add_constant(3, 3, -MatrixXd::Identity(l, l));
+  if (unc) {
+    MatrixXd Hb = MatrixXd::Zero(n2, P.j());
+    Hb.topRows(n) = s * P.H;
+    MatrixXd Eb = MatrixXd::Zero(P.k(), n2);
+    Eb.leftCols(n) = P.E / s;
+    M.add_term(0, 4, A.P, I2, Hb);
+    M.add_scalar_term(1, 1, A.lambda, Eb.transpose() * Eb);
+    M.add_scalar_term(4, 4, A.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  }
+  return A;
+}
+
+}  // namespace hinf::synth

@@ -1,0 +1,53 @@
+// Theorem 1 of seed 000 (SPEC §2, LMI (20)) written once, block by block, as data for
+// the generic LMI layer; and the robust analysis LMI of Lemma 1 (eq. 17) with the
+// S-procedure for a fixed filter (SPEC §2, check 4).
+#pragma once
+#include "hinf/models/plant.hpp"
+#include "hinf/certify/dense_lmi.hpp"
+#include "hinf/lmi/lmi_problem.hpp"
+
+namespace hinf::synth {
+
+// H/E balance: s with ‖sH‖ = ‖E/s‖ (SPEC §3: leaves ΔA = HFE unchanged). 1 if no uncertainty.
+double he_balance(const hinf::Plant& plant);
+
+struct Theorem1Lmi {
+  lmi::LmiProblem lmi{std::vector<int>{}};
+  lmi::VarId R, S, AFbar, BFbar, CFbar, lambda, g;  // lambda invalid without uncertainty
+  lmi::VarId margin;  // only in the γ back-off problem (g fixed): M(x) ⪯ margin·I
+  double he_scale = 1;  // the LMI uses H' = sH, E' = E/s, λ' = λ s²
+};
+
+// Blocks n, n, n, n, p, q, l, j (the last only with uncertainty).
+Theorem1Lmi build_theorem1(const hinf::Plant& plant, double he_scale);
+
+// The γ back-off problem (USER-PAIN #6): g = γ_b² fixed, and a scalar `margin` with
+// M(x) ⪯ margin·I on every block; minimising `margin` maximises the LMI's margin.
+Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double he_scale, double g_fixed);
+
+// The Theorem-1 variables at a solution x of T's LMI, in the user's units (λ = λ'/s²),
+// with g = γ² (fixed in the back-off problem, the objective otherwise).
+certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const hinf::Plant& plant,
+                                      const Eigen::VectorXd& x, double g);
+
+// Filter recovery, docs/maths.md (21): A_F = S⁻¹Ā_F, B_F = S⁻¹B̄_F, C_F = C̄_F, by
+// Cholesky solves with S. Throws Error(NumericalFailure) if S is not positive definite.
+hinf::Filter recover_filter(const certify::Theorem1Point& pt);
+
+struct AnalysisLmi {
+  lmi::LmiProblem lmi{std::vector<int>{}};
+  lmi::VarId P, lambda, g;
+  double he_scale = 1;
+};
+
+// Blocks 2n, 2n, p+q, l, j:
+//   [ −P   PĀ₀        PB̄    0    PH̄  ]
+//   [  ∗  −P+λĒᵀĒ     0     C̄ᵀ   0   ]
+//   [  ∗   ∗         −gI    0    0   ]   < 0
+//   [  ∗   ∗          ∗    −I    0   ]
+//   [  ∗   ∗          ∗     ∗   −λI  ]
+// with the error system of SPEC eqs. (13)–(15), H̄ = [H; 0], Ē = [E, 0].
+AnalysisLmi build_analysis_lmi(const hinf::Plant& plant, const hinf::Filter& filter,
+                               double he_scale);
+
+}  // namespace hinf::synth
