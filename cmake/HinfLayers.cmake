@@ -12,7 +12,7 @@ include_guard(GLOBAL)
 set(HINF_LAYER_hinf_common        "")
 set(HINF_LAYER_hinf_models        "")
 set(HINF_LAYER_hinf_runtime       hinf_models)
-set(HINF_LAYER_hinf_runtime_yaml  hinf_runtime hinf_models)
+set(HINF_LAYER_hinf_runtime_yaml  hinf_runtime hinf_models hinf_common)
 set(HINF_LAYER_hinf_lmi           "")
 set(HINF_LAYER_hinf_sdp           hinf_lmi)
 set(HINF_LAYER_hinf_certify       hinf_models hinf_common)
@@ -23,12 +23,16 @@ set(HINF_LAYER_hinf_sim           hinf_runtime hinf_runtime_yaml hinf_synth hinf
 
 # Third-party libraries per layer; anything with '::' or a plain library name not listed
 # here is refused too (Ipopt only in the solver, LAPACK only in the certificate).
-set(HINF_EXTERNAL_hinf_common     Eigen3::Eigen yaml-cpp PkgConfig::NETTLE)
+set(HINF_EXTERNAL_hinf_common     Eigen3::Eigen yaml-cpp)
+set(HINF_EXTERNAL_hinf_runtime_yaml Eigen3::Eigen yaml-cpp)
 set(HINF_EXTERNAL_hinf_models     Eigen3::Eigen)
 set(HINF_EXTERNAL_hinf_runtime    Eigen3::Eigen)
 set(HINF_EXTERNAL_hinf_lmi        Eigen3::Eigen)
 set(HINF_EXTERNAL_hinf_sdp        Eigen3::Eigen PkgConfig::IPOPT)
-set(HINF_EXTERNAL_hinf_certify    Eigen3::Eigen yaml-cpp PkgConfig::NETTLE LAPACK)
+set(HINF_EXTERNAL_hinf_certify    Eigen3::Eigen yaml-cpp LAPACK)
+set(HINF_EXTERNAL_hinf_synth      Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK)
+set(HINF_EXTERNAL_hinf_sim        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
+                                  Threads::Threads nlohmann_json::nlohmann_json)
 
 # _hinf_closure(<target> <out-var>): the link closure of a target (target names only;
 # generator expressions such as $<LINK_ONLY:x> are unwrapped).

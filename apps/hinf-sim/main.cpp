@@ -2,7 +2,6 @@
 // Exit codes: 0 ok, 2 invalid input or unwritable output, 3 infeasible synthesis,
 // 4 numerical failure (synthesis certificate, non-finite truth).
 #include <CLI/CLI.hpp>
-#include <hinf/runtime_yaml/gains_file.hpp>
 #include <hinf/common/error.hpp>
 
 #include <cmath>
@@ -75,33 +74,35 @@ int run(int argc, char** argv) {
     if (duration > 0) {
       const double ratio = duration / s.sample_time;
       if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
-        throw ScenarioError("--duration " + std::to_string(duration) + ": must be a whole number of sample times");
+        throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                          "--duration " + std::to_string(duration) + ": must be a whole number of sample times");
       s.duration = duration;
       if (s.steady_state_start && *s.steady_state_start > duration) s.steady_state_start.reset();
     }
     for (const char* name : {"hinf", "published"}) {
       const auto& src = std::string(name) == "hinf" ? s.filters.hinf : s.filters.published;
       if (!src) continue;
-      ObtainedGains g = obtain_gains(*src, verbose);
+      ObtainedGains g;
+      try {
+        g = obtain_gains(*src, verbose);
+      } catch (const hinf::Error& e) {  // name a synthesis as such; a gains file names itself
+        if (src->synthesize_path.empty()) throw;
+        throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());
+      }
       // The sim feeds y = Cartesian position (m = 3) and reads the whole state (l = 6).
       if (g.gains.B_F.cols() != 3 || g.gains.C_F.rows() != 6)
-        throw ScenarioError("filters." + std::string(name) + ": " + g.origin + ": B_F has " +
-                            std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
-                            std::to_string(g.gains.C_F.rows()) +
-                            " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
+        throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                          "filters." + std::string(name) + ": " + g.origin + ": B_F has " +
+                              std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
+                              std::to_string(g.gains.C_F.rows()) +
+                              " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
       if (verbose) std::cerr << "hinf-sim: " << name << ": " << g.origin << "\n";
       (std::string(name) == "hinf" ? setup.hinf : setup.published) = g.gains;
       context.gains[name] = {g.origin, g.gamma};
       gains_files.emplace_back(std::string(name) == "hinf" ? "gains.yaml" : "published_gains.yaml", g.gains_yaml);
     }
-  } catch (const ScenarioError& e) {
+  } catch (const hinf::Error& e) {  // scenario, gains file, synthesis config or synthesis
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return kExitInvalid;
-  } catch (const hinf::runtime_yaml::GainsFileError& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return kExitInvalid;
-  } catch (const hinf::Error& e) {
-    std::cerr << "hinf-sim: error: synthesis: " << e.what() << "\n";
     return hinf::exit_code(e.code());
   }
 

@@ -1,17 +1,30 @@
 #include "cli_support.hpp"
 
+#include "hinf/common/number_text.hpp"
+
 #include <cmath>
+#include <utility>
 
 namespace hinf::cli {
 
 using hinf::Error;
 using hinf::ErrorCode;
 
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.10g", v);
-  return b;
+std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std::string& gains_help) {
+  auto args = std::make_shared<ConfigGainsArgs>();
+  cmd.add_option("config", args->config, "config YAML")->required();
+  cmd.add_option("gains", args->gains, gains_help)->required();
+  return args;
 }
+
+ConfigAndFilter load_config_and_filter(const std::string& config_path, const std::string& gains_path) {
+  synth::SynthConfig config = synth::load_config(config_path);
+  runtime_yaml::GainsFile gains = runtime_yaml::load_gains_file(gains_path);
+  hinf::Filter filter = filter_from_gains(gains, config.plant, gains_path);
+  return {std::move(config), std::move(gains), std::move(filter)};
+}
+
+std::string num(double v) { return hinf::significant_text(v, 10); }
 
 hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Plant& plant,
                                 const std::string& path) {

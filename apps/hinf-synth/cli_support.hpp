@@ -1,6 +1,8 @@
 // Helpers shared by the subcommands: loading inputs, printing numbers and reports.
 #pragma once
+#include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "hinf/runtime_yaml/gains_file.hpp"
@@ -9,12 +11,28 @@
 
 namespace hinf::cli {
 
+// The positional pair CONFIG GAINS of the subcommands that read a config and a gains file.
+struct ConfigGainsArgs {
+  std::string config;
+  std::string gains;
+};
+// Registers both positionals (required) on `cmd`; the values are there once parsed.
+std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std::string& gains_help);
+
+// A config and a gains file read together (in that order), with the gains' filter.
+struct ConfigAndFilter {
+  synth::SynthConfig config;
+  runtime_yaml::GainsFile gains;
+  hinf::Filter filter;  // checked against the config's plant
+};
+ConfigAndFilter load_config_and_filter(const std::string& config_path, const std::string& gains_path);
+
 // Gains file → Filter, with dimensions checked against the plant (Error InvalidInput).
 hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Plant& plant,
                                 const std::string& path);
 // "%.10g"
 std::string num(double v);
-// Coefficient ranges of the plant matrices (USER-PAIN #5), for --verbose.
+// Coefficient ranges of the plant matrices (docs/maths.md [D5]), for --verbose.
 void print_coefficient_ranges(const hinf::Plant& plant, std::FILE* out);
 // SDP-solver-style iteration table on stderr.
 // The --verbose iteration table on stderr (a header whenever a new SDP starts).

@@ -1,6 +1,8 @@
 // hinf-synth analyze CONFIG GAINS.yaml [--json]
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -9,46 +11,61 @@
 namespace hinf::cli {
 
 namespace {
-std::string json_num(double v) { return std::isfinite(v) ? num(v) : "null"; }
+
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+// A number as the text output prints it (num: 10 significant digits); null if not finite.
+Json json_num(double v) { return std::isfinite(v) ? Json(std::strtod(num(v).c_str(), nullptr)) : Json(nullptr); }
+
+// One line of JSON: the gains path and the analysis (keys in this order).
+std::string analysis_json(const std::string& gains_path, const runtime_yaml::GainsFile& g,
+                          const synth::FilterAnalysis& a) {
+  Json j = Json::object();
+  j["gains"] = gains_path;
+  j["claimed_gamma"] = g.gamma ? json_num(*g.gamma) : Json(nullptr);
+  j["spectral_radius_nominal"] = json_num(a.spectral_radius_nominal);
+  j["hinf_norm_nominal"] = json_num(a.hinf_norm_nominal);
+  j["hinf_norm_peak_frequency"] = json_num(a.hinf_norm_peak_frequency);
+  j["spectral_radius_sampled_max"] = json_num(a.spectral_radius_sampled_max);
+  j["robust_bound"] = json_num(a.robust_bound);
+  if (!a.delta_grid.empty()) {
+    j["worst_delta"] = json_num(a.worst_delta);
+    j["worst_delta_hinf_norm"] = json_num(a.worst_delta_hinf_norm);
+    Json grid = Json::array();
+    for (const auto& p : a.delta_grid) {
+      Json point = Json::object();
+      point["delta"] = json_num(p.delta);
+      point["spectral_radius"] = json_num(p.spectral_radius);
+      point["hinf_norm"] = json_num(p.hinf_norm);
+      grid.push_back(std::move(point));
+    }
+    j["delta_grid"] = std::move(grid);
+  }
+  // A path that is not UTF-8 is written with U+FFFD rather than refused.
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 }  // namespace
 
 void add_analyze(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("analyze", "nominal Hinf norm, robust bound and delta-grid worst case of any filter");
-  auto config = std::make_shared<std::string>();
-  auto gains = std::make_shared<std::string>();
+  const auto args = add_config_gains_args(*cmd, "gains YAML");
   auto json = std::make_shared<bool>(false);
   auto points = std::make_shared<int>(41);
-  cmd->add_option("config", *config, "config YAML")->required();
-  cmd->add_option("gains", *gains, "gains YAML")->required();
   cmd->add_flag("--json", *json, "print JSON instead of text");
   cmd->add_option("--delta-points", *points, "grid points over [-delta_bar, delta_bar] (hill configs)")
       ->check(CLI::Range(2, 100001));
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::SynthConfig cfg = synth::load_config(*config);
-      const runtime_yaml::GainsFile g = runtime_yaml::load_gains_file(*gains);
-      const hinf::Filter f = filter_from_gains(g, cfg.plant, *gains);
-      const synth::FilterAnalysis a = synth::analyze_filter(cfg.plant, cfg.hill, f, cfg.settings, *points);
+      const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
+      const synth::SynthConfig& cfg = in.config;
+      const runtime_yaml::GainsFile& g = in.gains;
+      const synth::FilterAnalysis a = synth::analyze_filter(cfg.plant, cfg.hill, in.filter, cfg.settings, *points);
       if (*json) {
-        std::cout << "{\"gains\": \"" << *gains << "\", \"claimed_gamma\": " << (g.gamma ? json_num(*g.gamma) : "null")
-                  << ", \"spectral_radius_nominal\": " << json_num(a.spectral_radius_nominal)
-                  << ", \"hinf_norm_nominal\": " << json_num(a.hinf_norm_nominal)
-                  << ", \"hinf_norm_peak_frequency\": " << json_num(a.hinf_norm_peak_frequency)
-                  << ", \"spectral_radius_sampled_max\": " << json_num(a.spectral_radius_sampled_max)
-                  << ", \"robust_bound\": " << json_num(a.robust_bound);
-        if (!a.delta_grid.empty()) {
-          std::cout << ", \"worst_delta\": " << json_num(a.worst_delta)
-                    << ", \"worst_delta_hinf_norm\": " << json_num(a.worst_delta_hinf_norm) << ", \"delta_grid\": [";
-          for (size_t i = 0; i < a.delta_grid.size(); ++i)
-            std::cout << (i ? ", " : "") << "{\"delta\": " << json_num(a.delta_grid[i].delta)
-                      << ", \"spectral_radius\": " << json_num(a.delta_grid[i].spectral_radius)
-                      << ", \"hinf_norm\": " << json_num(a.delta_grid[i].hinf_norm) << "}";
-          std::cout << "]";
-        }
-        std::cout << "}\n";
+        std::cout << analysis_json(args->gains, g, a) << "\n";
         return 0;
       }
-      std::cout << "gains                      " << *gains << (g.gamma ? " (claims gamma " + num(*g.gamma) + ")" : "") << "\n"
+      std::cout << "gains                      " << args->gains << (g.gamma ? " (claims gamma " + num(*g.gamma) + ")" : "") << "\n"
                 << "spectral radius (nominal)  " << num(a.spectral_radius_nominal) << "\n"
                 << "nominal Hinf norm          " << num(a.hinf_norm_nominal) << " at " << num(a.hinf_norm_peak_frequency) << " rad/sample\n"
                 << "sampled spectral radius    " << num(a.spectral_radius_sampled_max) << " (max over admissible F)\n"

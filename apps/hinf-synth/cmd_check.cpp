@@ -1,5 +1,5 @@
 // hinf-synth check CONFIG --golden GOLDEN.yaml [--rtol R]: regression of the synthesis.
-// The filters are compared as transfer functions (USER-PAIN #14): another state-space
+// The filters are compared as transfer functions (docs/maths.md (61), [D14]): another state-space
 // realisation of the same filter passes; a real change fails. Because the optimal
 // filter is not unique, a golden filter whose transfer function differs is still
 // accepted when it remains certified for the config at the golden γ (within
@@ -24,9 +24,10 @@ void add_check(CLI::App& app, Action& action) {
       ->check(CLI::Range(1e-14, 1.0));
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::SynthConfig cfg = synth::load_config(*config);
-      const runtime_yaml::GainsFile g = runtime_yaml::load_gains_file(*golden);
-      const hinf::Filter gf = filter_from_gains(g, cfg.plant, *golden);
+      const ConfigAndFilter in = load_config_and_filter(*config, *golden);
+      const synth::SynthConfig& cfg = in.config;
+      const runtime_yaml::GainsFile& g = in.gains;
+      const hinf::Filter& gf = in.filter;
       if (!g.gamma)
         throw hinf::Error(hinf::ErrorCode::InvalidInput, *golden + ": golden file has no 'gamma'");
       const synth::SynthesisResult r = synth::synthesize(cfg.plant, cfg.settings);

@@ -8,17 +8,15 @@ namespace hinf::cli {
 
 void add_verify(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("verify", "re-derive the certificate (SPEC §2 checks 2-4) of a gains file against a config");
-  auto config = std::make_shared<std::string>();
-  auto gains = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "config YAML")->required();
-  cmd->add_option("gains", *gains, "gains YAML (must state gamma)")->required();
+  const auto args = add_config_gains_args(*cmd, "gains YAML (must state gamma)");
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::SynthConfig cfg = synth::load_config(*config);
-      const runtime_yaml::GainsFile g = runtime_yaml::load_gains_file(*gains);
-      const hinf::Filter f = filter_from_gains(g, cfg.plant, *gains);
+      const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
+      const synth::SynthConfig& cfg = in.config;
+      const runtime_yaml::GainsFile& g = in.gains;
+      const hinf::Filter& f = in.filter;
       if (!g.gamma)
-        throw hinf::Error(hinf::ErrorCode::InvalidInput, *gains + ": no 'gamma' to verify (use 'analyze' for a bound)");
+        throw hinf::Error(hinf::ErrorCode::InvalidInput, args->gains + ": no 'gamma' to verify (use 'analyze' for a bound)");
       const synth::Certificate c = synth::certify_filter(cfg.plant, f, *g.gamma, cfg.settings);
       std::cout << "claimed gamma         " << num(*g.gamma) << "\n"
                 << "schur stable          " << (c.schur_stable ? "yes" : "NO") << " (spectral radius nominal "

@@ -6,7 +6,6 @@
 
 #include "commands.hpp"
 #include "hinf/common/suggest.hpp"
-#include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/common/error.hpp"
 
 #if defined(__GLIBC__)
@@ -63,9 +62,6 @@ int main(int argc, char** argv) {
   } catch (const Error& e) {
     std::cerr << "hinf-synth: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());
-  } catch (const hinf::runtime_yaml::GainsFileError& e) {
-    std::cerr << "hinf-synth: error: " << e.what() << "\n";
-    return hinf::exit_code(ErrorCode::InvalidInput);
   } catch (const std::exception& e) {
     std::cerr << "hinf-synth: internal error: " << e.what() << "\n";
     return hinf::exit_code(ErrorCode::NumericalFailure);

@@ -54,49 +54,39 @@ bool same_results() {
   return worst <= 1e-12 && worst_f <= 1e-5;
 }
 
-void BM_generated_double(benchmark::State& state) {
-  bnav_state s{};
-  double z[BNAV_NZ];
+// The timed loop shared by every benchmark: step(y, z) on the inputs in turn.
+template <class T, std::size_t NZ, class Step>
+void time_steps(benchmark::State& state, const std::array<std::array<T, 3>, kInputs>& y, Step step) {
+  T z[NZ];
   int k = 0;
   for (auto _ : state) {
-    bnav_step(&s, kY[static_cast<std::size_t>(k)].data(), z);
+    step(y[static_cast<std::size_t>(k)].data(), z);
     benchmark::DoNotOptimize(z);
     k = (k + 1) & (kInputs - 1);
   }
 }
+
+void BM_generated_double(benchmark::State& state) {
+  bnav_state s{};
+  time_steps<double, BNAV_NZ>(state, kY, [&s](const double* y, double* z) { bnav_step(&s, y, z); });
+}
 BENCHMARK(BM_generated_double);
 
 void BM_hand_double(benchmark::State& state) {
-  double x[6] = {0}, z[6];
-  int k = 0;
-  for (auto _ : state) {
-    hand_step(x, kY[static_cast<std::size_t>(k)].data(), z);
-    benchmark::DoNotOptimize(z);
-    k = (k + 1) & (kInputs - 1);
-  }
+  double x[6] = {0};
+  time_steps<double, 6>(state, kY, [&x](const double* y, double* z) { hand_step(x, y, z); });
 }
 BENCHMARK(BM_hand_double);
 
 void BM_generated_float(benchmark::State& state) {
   bnavf_state s{};
-  float z[BNAVF_NZ];
-  int k = 0;
-  for (auto _ : state) {
-    bnavf_step(&s, kYf[static_cast<std::size_t>(k)].data(), z);
-    benchmark::DoNotOptimize(z);
-    k = (k + 1) & (kInputs - 1);
-  }
+  time_steps<float, BNAVF_NZ>(state, kYf, [&s](const float* y, float* z) { bnavf_step(&s, y, z); });
 }
 BENCHMARK(BM_generated_float);
 
 void BM_hand_float(benchmark::State& state) {
-  float x[6] = {0}, z[6];
-  int k = 0;
-  for (auto _ : state) {
-    hand_step_f(x, kYf[static_cast<std::size_t>(k)].data(), z);
-    benchmark::DoNotOptimize(z);
-    k = (k + 1) & (kInputs - 1);
-  }
+  float x[6] = {0};
+  time_steps<float, 6>(state, kYf, [&x](const float* y, float* z) { hand_step_f(x, y, z); });
 }
 BENCHMARK(BM_hand_float);
 

@@ -1,4 +1,4 @@
-/* Hand-written reference implementation of the paper's filter (SPEC eq. 12) for
+/* Hand-written reference implementation of the paper's filter (docs/maths.md (5)-(6)) for
  * bench_codegen: the plain C loop a flight-software engineer would write. */
 #ifndef HINF_BENCH_HAND_LOOP_H
 #define HINF_BENCH_HAND_LOOP_H

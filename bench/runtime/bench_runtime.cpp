@@ -1,5 +1,5 @@
 // Cost of one step: LtiFilter (dynamic), FixedLtiFilter<6,3,6>, a plain C-style loop doing
-// the same arithmetic as eq. (12), and EKF / REKF predict+update on the Hill model with a
+// the same arithmetic as docs/maths.md (5)-(6), and EKF / REKF predict+update on the Hill model with a
 // Cartesian (and range/azimuth/elevation) measurement. Inputs cycle through a
 // precomputed table so nothing is constant-folded.
 #include <benchmark/benchmark.h>

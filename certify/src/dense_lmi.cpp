@@ -37,7 +37,7 @@ MatrixXd theorem1_matrix(const hinf::Plant& P, const Theorem1Point& x) {
   std::vector<int> sizes{n, n, n, n, p, q, l};
   if (unc) sizes.push_back(P.j());
   BlockMatrix M(sizes);
-  // SPEC (20), upper triangle, row by row
+  // docs/maths.md (18), upper triangle, row by row
   M.set(0, 0, -x.R);
   M.set(0, 1, -x.S);
   M.set(0, 2, x.R * P.A + x.BF_bar * P.C);

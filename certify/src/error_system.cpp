@@ -1,4 +1,4 @@
-// Error system of SPEC §1, eqs. (13)–(15); see error_system.hpp.
+// Error system docs/maths.md (9)–(11); see error_system.hpp.
 #include "hinf/certify/error_system.hpp"
 
 #include <sstream>

@@ -110,47 +110,39 @@ std::vector<double> unit_circle_frequencies(const Eigen::MatrixXd& A, const Eige
   return thetas;
 }
 
-}  // namespace
-
-HinfNorm discrete_hinf_norm(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
-                            const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
-                            double rel_tol) {
-  validate(A, B, C, D, rel_tol);
-  const Eigen::Index n = A.rows();
-  HinfNorm result;
-  const double sigma_D = sigma_max(D);
-
-  Eigen::VectorXcd poles(0);
-  if (n > 0) {
-    Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-    if (es.info() != Eigen::Success)
-      throw Error(ErrorCode::NumericalFailure, "discrete_hinf_norm: eigenvalues of A did not converge");
-    poles = es.eigenvalues();
-    const double rho = poles.cwiseAbs().maxCoeff();
-    if (!(rho < 1.0)) {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "discrete_hinf_norm: A is not Schur stable (spectral radius " << rho
-          << " >= 1); the H∞ norm is infinite";
-      throw Error(ErrorCode::Infeasible, msg.str());
-    }
+// The poles of G (eigenvalues of A); throws unless A is Schur stable (the norm is then
+// infinite: exit 3).
+Eigen::VectorXcd stable_poles(const Eigen::MatrixXd& A) {
+  if (A.rows() == 0) return Eigen::VectorXcd(0);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+  if (es.info() != Eigen::Success)
+    throw Error(ErrorCode::NumericalFailure, "discrete_hinf_norm: eigenvalues of A did not converge");
+  const Eigen::VectorXcd poles = es.eigenvalues();
+  const double rho = poles.cwiseAbs().maxCoeff();
+  if (!(rho < 1.0)) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "discrete_hinf_norm: A is not Schur stable (spectral radius " << rho
+        << " >= 1); the H∞ norm is infinite";
+    throw Error(ErrorCode::Infeasible, msg.str());
   }
-  if (n == 0 || B.cols() == 0 || C.rows() == 0) {
-    result.norm = result.lower_bound = sigma_D;
-    return result;
-  }
+  return poles;
+}
 
-  const detail::FrequencyResponse response(A, B, C, D);
-  double attained = 0, peak = 0;  // best σ_max evaluated on the unit circle, and where
-  auto evaluate = [&](double theta) {
-    const double s = response.sigma_max(theta);
-    if (s > attained) { attained = s; peak = theta; }
+// The largest σ_max(G(e^{jθ})) evaluated so far (a certified lower bound on ‖G‖∞) and
+// where, with a golden-section search for a local maximum on [a, b] (speed only: it
+// raises the lower bound so that fewer pencil eigenproblems are needed; every value it
+// finds is an attained σ_max, so correctness does not depend on unimodality).
+class PeakSearch {
+ public:
+  explicit PeakSearch(const detail::FrequencyResponse& response) : response_(response) {}
+
+  double evaluate(double theta) {
+    const double s = response_.sigma_max(theta);
+    if (s > attained_) { attained_ = s; peak_ = theta; }
     return s;
-  };
-  // Golden-section search for a local maximum of σ_max on [a, b] (speed only: it raises
-  // the lower bound so that fewer pencil eigenproblems are needed; every value it finds
-  // is an attained σ_max, so correctness does not depend on unimodality).
-  auto refine = [&](double a, double b) {
+  }
+  void refine(double a, double b) {
     const double r = 0.5 * (std::sqrt(5.0) - 1.0);
     double x1 = b - r * (b - a), x2 = a + r * (b - a);
     double f1 = evaluate(x1), f2 = evaluate(x2);
@@ -158,62 +150,100 @@ HinfNorm discrete_hinf_norm(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
       if (f1 < f2) { a = x1; x1 = x2; f1 = f2; x2 = a + r * (b - a); f2 = evaluate(x2); }
       else { b = x2; x2 = x1; f2 = f1; x1 = b - r * (b - a); f1 = evaluate(x1); }
     }
-  };
-  // Initial lower bound: θ = 0, π and the arguments of the poles (Bruinsma–Steinbuch
-  // use the pole with the largest ratio |Im|/|Re|; evaluating all of them is cheap),
-  // then a local search between the neighbours of the best of these.
+  }
+  double attained() const { return attained_; }
+  double peak() const { return peak_; }
+
+ private:
+  const detail::FrequencyResponse& response_;
+  double attained_ = 0, peak_ = 0;
+};
+
+// Initial lower bound: θ = 0, π and the arguments of the poles (Bruinsma–Steinbuch use
+// the pole with the largest ratio |Im|/|Re|; evaluating all of them is cheap), then a local
+// search between the neighbours of the best of these. False if G ≡ 0 (and σ_max(D) = 0).
+bool initial_lower_bound(PeakSearch& search, const Eigen::VectorXcd& poles, Eigen::Index n, double sigma_D) {
   std::vector<double> initial{0.0, kPi};
   for (Eigen::Index i = 0; i < poles.size(); ++i) initial.push_back(std::abs(std::arg(poles(i))));
   std::sort(initial.begin(), initial.end());
   initial.erase(std::unique(initial.begin(), initial.end()), initial.end());
-  for (double theta : initial) evaluate(theta);
-  if (attained == 0.0) {
+  for (double theta : initial) search.evaluate(theta);
+  if (search.attained() == 0.0) {
     // A rational matrix of McMillan degree ≤ n that vanishes at n + 1 distinct points
     // of the unit circle vanishes identically (each entry's numerator has degree ≤ n).
-    for (Eigen::Index i = 0; i <= n && attained == 0.0; ++i)
-      evaluate(kPi * (static_cast<double>(i) + 0.5) / static_cast<double>(n + 1));
-    if (attained == 0.0 && sigma_D == 0.0) return result;  // G ≡ 0
+    for (Eigen::Index i = 0; i <= n && search.attained() == 0.0; ++i)
+      search.evaluate(kPi * (static_cast<double>(i) + 0.5) / static_cast<double>(n + 1));
+    if (search.attained() == 0.0 && sigma_D == 0.0) return false;
   }
-  if (attained > 0.0) {
-    const auto it = std::lower_bound(initial.begin(), initial.end(), peak);
+  if (search.attained() > 0.0) {
+    const auto it = std::lower_bound(initial.begin(), initial.end(), search.peak());
     const double left = it == initial.begin() ? 0.0 : *(it - 1);
     const double right = (it == initial.end() || it + 1 == initial.end()) ? kPi : *(it + 1);
-    refine(left, right);
+    search.refine(left, right);
   }
+  return true;
+}
+
+// A test frequency with the bracket it lies in.
+struct TestPoint {
+  double theta, left, right;
+};
+
+// Midpoints of consecutive level-set frequencies (and of the end intervals) and the
+// frequencies themselves.
+std::vector<TestPoint> test_points(const std::vector<double>& thetas) {
+  std::vector<TestPoint> points;
+  if (thetas.empty()) return points;
+  points.push_back({0.5 * thetas.front(), 0.0, thetas.front()});
+  for (std::size_t i = 0; i < thetas.size(); ++i) {
+    const double next = i + 1 < thetas.size() ? thetas[i + 1] : kPi;
+    points.push_back({thetas[i], i > 0 ? thetas[i - 1] : 0.0, next});
+    points.push_back({0.5 * (thetas[i] + next), thetas[i], next});
+  }
+  return points;
+}
+
+}  // namespace
+
+// Bruinsma–Steinbuch level-set iteration (docs/maths.md (48)–(49)): at γ = (1 + tol)·(lower
+// bound), the unit-circle eigenvalues of the symplectic pencil are where σ_max(G) = γ; if no
+// test point between them exceeds γ, ‖G‖∞ ≤ γ; else the lower bound rises.
+HinfNorm discrete_hinf_norm(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                            const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
+                            double rel_tol) {
+  validate(A, B, C, D, rel_tol);
+  const Eigen::Index n = A.rows();
+  HinfNorm result;
+  const double sigma_D = sigma_max(D);
+  const Eigen::VectorXcd poles = stable_poles(A);
+  if (n == 0 || B.cols() == 0 || C.rows() == 0) {
+    result.norm = result.lower_bound = sigma_D;
+    return result;
+  }
+  const detail::FrequencyResponse response(A, B, C, D);
+  PeakSearch search(response);
+  if (!initial_lower_bound(search, poles, n, sigma_D)) return result;  // G ≡ 0
 
   // Work with G/s (s = initial lower bound) so that the tested level is O(1).
-  const double s = std::max(attained, sigma_D);
+  const double s = std::max(search.attained(), sigma_D);
   const Eigen::MatrixXd Bs = B / s, Ds = D / s;
   for (int iter = 1; iter <= kMaxIterations; ++iter) {
-    const double gamma_lb = std::max(attained, sigma_D);
-    const double gamma = (1.0 + rel_tol) * gamma_lb;
+    const double gamma = (1.0 + rel_tol) * std::max(search.attained(), sigma_D);
     result.iterations = iter;
-    const std::vector<double> thetas = unit_circle_frequencies(A, Bs, C, Ds, gamma / s);
-    // Test points with the bracket each lies in: midpoints of consecutive candidates
-    // (and of the end intervals) and the candidates themselves.
-    struct TestPoint { double theta, left, right; };
-    std::vector<TestPoint> points;
-    if (!thetas.empty()) {
-      points.push_back({0.5 * thetas.front(), 0.0, thetas.front()});
-      for (std::size_t i = 0; i < thetas.size(); ++i) {
-        const double next = i + 1 < thetas.size() ? thetas[i + 1] : kPi;
-        points.push_back({thetas[i], i > 0 ? thetas[i - 1] : 0.0, next});
-        points.push_back({0.5 * (thetas[i] + next), thetas[i], next});
-      }
-    }
+    const std::vector<TestPoint> points = test_points(unit_circle_frequencies(A, Bs, C, Ds, gamma / s));
     double best = 0;
     const TestPoint* best_point = nullptr;
     for (const TestPoint& tp : points) {
-      const double value = evaluate(tp.theta);
+      const double value = search.evaluate(tp.theta);
       if (value > best) { best = value; best_point = &tp; }
     }
     if (!(best > gamma)) {
       result.norm = gamma;
-      result.peak_frequency = peak;
-      result.lower_bound = attained;
+      result.peak_frequency = search.peak();
+      result.lower_bound = search.attained();
       return result;
     }
-    refine(best_point->left, best_point->right);
+    search.refine(best_point->left, best_point->right);
   }
   throw Error(ErrorCode::NumericalFailure,
               "discrete_hinf_norm: no convergence in " + std::to_string(kMaxIterations) +

@@ -51,7 +51,7 @@ struct SplitMix64 {
 
 long double gamma_k(long double k, long double u) { return k * u / (1.0L - k * u); }
 
-// Running error bound of init + `steps` steps of eq. (12) evaluated in arithmetic
+// Running error bound of init + `steps` steps of docs/maths.md (5)–(6) evaluated in arithmetic
 // with unit roundoff u, given the exact states x (column k = x(k)). With δ_j the
 // rounding error committed in step j, the state error is exactly
 //   e(k) = A^k e(0) + Σ_{j<k} A^(k-1-j) δ_j,

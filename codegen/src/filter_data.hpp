@@ -12,7 +12,7 @@ namespace hinf::codegen::detail {
 
 // Every entry is exactly representable in the target real type.
 struct FilterData {
-  Eigen::MatrixXd A_F, B_F, C_F;  // SPEC eq. (12)
+  Eigen::MatrixXd A_F, B_F, C_F;  // docs/maths.md (5)–(6)
   Eigen::MatrixXd C_F_pinv;       // Moore–Penrose pseudo-inverse of C_F (n × l)
 };
 
@@ -27,7 +27,7 @@ struct TestVectors {
 };
 
 // Inputs: splitmix64(seed) mapped to uniform [-1, 1), rounded to the real type.
-// Expected outputs: init + eq. (12) evaluated in long double on the emitted data.
+// Expected outputs: init + docs/maths.md (5)–(6) evaluated in long double on the emitted data.
 // Tolerance: an a-priori running rounding-error bound (Higham, "Accuracy and
 // Stability of Numerical Algorithms", §3.1: |fl(aᵀb) − aᵀb| ≤ γ_k |a|ᵀ|b|,
 // γ_k = k u / (1 − k u)) propagated through the recursion with |A_F|, for the target

@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <charconv>
 
 namespace hinf {
 
@@ -10,13 +10,13 @@ std::string number_text(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   if (value == 0) return std::signbit(value) ? "-0" : "0";
-  // fewest significant digits that read back exactly
+  // fewest significant digits that read back exactly: std::to_chars's shortest
+  // round-trip form, in scientific notation so that its mantissa holds just those digits
   char buf[48];
-  int digits = 1;
-  for (; digits < 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-    if (std::strtod(buf, nullptr) == value) break;
-  }
+  const std::to_chars_result shortest =
+      std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific);
+  int digits = 0;
+  for (const char* c = buf; c != shortest.ptr && *c != 'e'; ++c) digits += (*c >= '0' && *c <= '9');
   // %g switches to an exponent once the exponent reaches the digit count ("1e+01" for 10);
   // integers and plain decimals up to 1e15 read better without one.
   const int exponent = static_cast<int>(std::floor(std::log10(std::abs(value))));
@@ -34,6 +34,12 @@ std::string number_text(double value) {
     text = mantissa + "e" + (negative ? "-" : "") + exp.substr(first);
   }
   return text;
+}
+
+std::string significant_text(double value, int digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  return buf;
 }
 
 }  // namespace hinf

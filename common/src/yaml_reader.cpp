@@ -8,8 +8,9 @@
 #include <limits>
 #include <set>
 
-#include "hinf/common/suggest.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/common/number_text.hpp"
+#include "hinf/common/suggest.hpp"
 
 namespace hinf {
 namespace {
@@ -58,6 +59,25 @@ bool is_core_integer(const std::string& s) {
   return true;
 }
 
+std::string dims(Eigen::Index rows, Eigen::Index cols) {
+  return std::to_string(rows) + "x" + std::to_string(cols);
+}
+
+// "'a'", "'a' or 'b'", "one of 'a', 'b', 'c'".
+std::string alternatives(const std::vector<std::string>& options) {
+  if (options.size() == 1) return "'" + options[0] + "'";
+  if (options.size() == 2) return "'" + options[0] + "' or '" + options[1] + "'";
+  std::string s = "one of ";
+  for (size_t i = 0; i < options.size(); ++i) s += (i ? ", '" : "'") + options[i] + "'";
+  return s;
+}
+
+std::string key_list(const std::vector<std::string>& keys) {
+  std::string s;
+  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
 }  // namespace
 
 std::string child_path(const std::string& parent, const std::string& key) {
@@ -75,17 +95,33 @@ void YamlReader::fail(const YAML::Node& at, const std::string& message) const {
   throw Error(ErrorCode::InvalidInput, location(at) + ": " + message);
 }
 
+YAML::Node YamlReader::load(const std::string& text, const std::string& empty_message) const {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::ParserException& e) {  // includes DeepRecursion
+    const std::string at = e.mark.is_null() ? source_
+                                            : source_ + ":" + std::to_string(e.mark.line + 1) +
+                                                  ":" + std::to_string(e.mark.column + 1);
+    throw Error(ErrorCode::InvalidInput, at + ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw Error(ErrorCode::InvalidInput, source_ + ": YAML error: " + e.what());
+  }
+  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull()))
+    throw Error(ErrorCode::InvalidInput, source_ + ": " + empty_message);
+  if (documents.size() > 1)
+    fail(documents[1], "the file holds " + std::to_string(documents.size()) +
+                           " YAML documents; it must be exactly one");
+  return documents[0];
+}
+
 void YamlReader::check_map(const YAML::Node& node, const std::string& path,
-                           const std::vector<std::string>& allowed) const {
+                           const std::vector<std::string>& allowed, EmptyMap empty) const {
   const std::string name = path.empty() ? "the top level" : "'" + path + "'";
+  if (empty == EmptyMap::Allowed && (node.IsNull() || (node.IsMap() && node.size() == 0))) return;
   if (!node.IsMap()) {
     if (node.IsNull())
-      fail(node, name + " is empty; expected a map with keys from: " +
-                     [&] {
-                       std::string s;
-                       for (const auto& a : allowed) s += (s.empty() ? "" : ", ") + a;
-                       return s;
-                     }());
+      fail(node, name + " is empty; expected a map with keys from: " + key_list(allowed));
     fail(node, name + " must be a map of keys, got " + node_kind(node));
   }
   if (node.size() == 0) fail(node, name + " is an empty map");
@@ -103,13 +139,19 @@ void YamlReader::check_map(const YAML::Node& node, const std::string& path,
     std::string message = "unknown key '" + full + "'";
     if (const auto suggestion = closest_match(key, allowed)) {
       message += " (did you mean '" + *suggestion + "'?)";
+    } else if (allowed.empty()) {
+      message += " (no keys are allowed here)";
     } else {
-      message += " (allowed here: ";
-      for (size_t i = 0; i < allowed.size(); ++i) message += (i ? ", " : "") + allowed[i];
-      message += ")";
+      message += " (allowed here: " + key_list(allowed) + ")";
     }
     fail(key_node, message);
   }
+}
+
+YamlMap YamlReader::map(const YAML::Node& node, const std::string& path,
+                        const std::vector<std::string>& allowed, EmptyMap empty) const {
+  check_map(node, path, allowed, empty);
+  return YamlMap(*this, node, path);
 }
 
 std::string YamlReader::scalar_text(const YAML::Node& node, const std::string& path,
@@ -135,6 +177,12 @@ double YamlReader::number(const YAML::Node& node, const std::string& path) const
   if (errno == ERANGE && std::isinf(v))
     fail(node, path + " = " + s + ": out of the range of a double");
   return v;  // underflow to a denormal or zero is accepted
+}
+
+double YamlReader::finite_number(const YAML::Node& node, const std::string& path) const {
+  const double v = number(node, path);
+  if (!std::isfinite(v)) fail(node, path + " = " + node.Scalar() + ": not finite");
+  return v;
 }
 
 int YamlReader::integer(const YAML::Node& node, const std::string& path) const {
@@ -170,31 +218,43 @@ std::string YamlReader::word(const YAML::Node& node, const std::string& path) co
   return node.Scalar();
 }
 
-Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& path) const {
-  const auto entry_path = [&](size_t i, size_t j) {
-    return path + " entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")";
-  };
-  const auto finite_entry = [&](const YAML::Node& e, const std::string& where) {
-    const double v = number(e, where);
-    if (!std::isfinite(v)) fail(e, where + " = " + e.Scalar() + ": not finite");
-    return v;
-  };
+std::string YamlReader::choice(const YAML::Node& node, const std::string& path,
+                              const std::vector<std::string>& options) const {
+  const std::string s = word(node, path);
+  for (const auto& o : options)
+    if (s == o) return s;
+  std::string message = path + " = '" + s + "': must be " + alternatives(options);
+  if (const auto guess = closest_match(s, options)) message += " (did you mean '" + *guess + "'?)";
+  fail(node, message);
+}
 
-  if (node.IsMap()) {
+Eigen::VectorXd YamlReader::vector(const YAML::Node& node, const std::string& path,
+                                   Eigen::Index size) const {
+  const std::string expected =
+      size >= 0 ? "a list of " + std::to_string(size) + " numbers" : "a list of numbers";
+  if (!node.IsSequence()) fail(node, path + ": expected " + expected + ", got " + node_kind(node));
+  if (node.size() == 0) fail(node, path + ": empty list; expected " + expected);
+  const auto n = static_cast<Eigen::Index>(node.size());
+  if (size >= 0 && n != size)
+    fail(node, path + ": expected " + expected + ", got " + std::to_string(n));
+  Eigen::VectorXd v(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    v(i) = finite_number(node[static_cast<size_t>(i)], path + " entry " + std::to_string(i + 1));
+  return v;
+}
+
+Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& path,
+                                   MatrixForms forms) const {
+  if (node.IsMap() && forms == MatrixForms::RowsOrDiag) {
     check_map(node, path, {"diag"});
     const YAML::Node diag = node["diag"];
     if (!diag) fail(node, path + ": missing key '" + child_path(path, "diag") + "'");
-    const std::string dpath = child_path(path, "diag");
-    if (!diag.IsSequence())
-      fail(diag, dpath + ": expected a list of numbers, got " + node_kind(diag));
-    if (diag.size() == 0) fail(diag, dpath + ": empty list (a matrix needs at least 1 entry)");
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(diag.size(), diag.size());
-    for (size_t i = 0; i < diag.size(); ++i)
-      M(i, i) = finite_entry(diag[i], dpath + " entry " + std::to_string(i + 1));
-    return M;
+    return vector(diag, child_path(path, "diag")).asDiagonal();
   }
   if (!node.IsSequence())
-    fail(node, path + ": expected a matrix (nested rows [[a, b], [c, d]] or {diag: [a, b]}), got " +
+    fail(node, path + (forms == MatrixForms::RowsOrDiag
+                           ? ": expected a matrix (nested rows [[a, b], [c, d]] or {diag: [a, b]}), got "
+                           : ": expected a matrix as nested rows [[a, b], [c, d]], got ") +
                    node_kind(node));
   if (node.size() == 0) fail(node, path + ": empty matrix ([]); it needs at least 1 row");
   const size_t rows = node.size();
@@ -213,8 +273,122 @@ Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& pa
   }
   Eigen::MatrixXd M(rows, cols);
   for (size_t i = 0; i < rows; ++i)
-    for (size_t j = 0; j < cols; ++j) M(i, j) = finite_entry(node[i][j], entry_path(i, j));
+    for (size_t j = 0; j < cols; ++j)
+      M(i, j) = finite_number(node[i][j], path + " entry (" + std::to_string(i + 1) + ", " +
+                                              std::to_string(j + 1) + ")");
   return M;
+}
+
+Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& path,
+                                   Eigen::Index rows, Eigen::Index cols, MatrixForms forms) const {
+  Eigen::MatrixXd M = matrix(node, path, forms);
+  if (M.rows() != rows || M.cols() != cols)
+    fail(node, path + ": expected a " + dims(rows, cols) + " matrix, got " + dims(M.rows(), M.cols()));
+  return M;
+}
+
+std::vector<std::pair<YAML::Node, std::string>> YamlReader::one_or_list(
+    const YAML::Node& node, const std::string& path) const {
+  if (node.IsMap()) return {{node, path}};
+  if (!node.IsSequence())
+    fail(node, path + ": expected a map or a list of maps, got " + node_kind(node));
+  std::vector<std::pair<YAML::Node, std::string>> items;
+  for (size_t i = 0; i < node.size(); ++i)
+    items.emplace_back(node[i], path + "[" + std::to_string(i) + "]");
+  return items;
+}
+
+// ---- YamlMap ------------------------------------------------------------------------
+
+bool YamlMap::has(const std::string& key) const { return static_cast<bool>(get(key)); }
+
+YAML::Node YamlMap::get(const std::string& key) const {
+  if (!node_.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  const YAML::Node& map = node_;  // const lookup: never inserts into the tree
+  return map[key];
+}
+
+YAML::Node YamlMap::required(const std::string& key, const std::string& what) const {
+  const YAML::Node value = get(key);
+  if (!value)
+    reader_->fail(node_, "missing key '" + path_of(key) + "'" + (what.empty() ? "" : " (" + what + ")"));
+  return value;
+}
+
+void YamlMap::fail(const std::string& key, const std::string& what) const {
+  const YAML::Node value = get(key);
+  reader_->fail(value ? value : node_, path_of(key) + ": " + what);
+}
+
+void YamlMap::fail_value(const std::string& key, double value, const std::string& rule) const {
+  const YAML::Node at = get(key);
+  reader_->fail(at ? at : node_, path_of(key) + " = " + number_text(value) + ": " + rule);
+}
+
+YamlMap YamlMap::map(const std::string& key, const std::vector<std::string>& allowed,
+                     EmptyMap empty) const {
+  return reader_->map(required(key), path_of(key), allowed, empty);
+}
+
+double YamlMap::number(const std::string& key) const {
+  return reader_->number(required(key), path_of(key));
+}
+double YamlMap::number(const std::string& key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
+double YamlMap::finite(const std::string& key) const {
+  return reader_->finite_number(required(key), path_of(key));
+}
+double YamlMap::finite(const std::string& key, double fallback) const {
+  return has(key) ? finite(key) : fallback;
+}
+double YamlMap::positive(const std::string& key) const {
+  const double v = finite(key);
+  if (!(v > 0)) fail_value(key, v, "must be > 0");
+  return v;
+}
+double YamlMap::positive(const std::string& key, double fallback) const {
+  return has(key) ? positive(key) : fallback;
+}
+double YamlMap::nonnegative(const std::string& key) const {
+  const double v = finite(key);
+  if (v < 0) fail_value(key, v, "must be >= 0");
+  return v;
+}
+double YamlMap::nonnegative(const std::string& key, double fallback) const {
+  return has(key) ? nonnegative(key) : fallback;
+}
+int YamlMap::integer(const std::string& key) const {
+  return reader_->integer(required(key), path_of(key));
+}
+int YamlMap::integer(const std::string& key, int fallback) const {
+  return has(key) ? integer(key) : fallback;
+}
+bool YamlMap::boolean(const std::string& key, bool fallback) const {
+  return has(key) ? reader_->boolean(get(key), path_of(key)) : fallback;
+}
+std::string YamlMap::word(const std::string& key) const {
+  return reader_->word(required(key), path_of(key));
+}
+std::string YamlMap::word(const std::string& key, const std::string& fallback) const {
+  return has(key) ? word(key) : fallback;
+}
+std::string YamlMap::choice(const std::string& key, const std::vector<std::string>& options) const {
+  return reader_->choice(required(key), path_of(key), options);
+}
+std::string YamlMap::choice(const std::string& key, const std::vector<std::string>& options,
+                            const std::string& fallback) const {
+  return has(key) ? choice(key, options) : fallback;
+}
+Eigen::VectorXd YamlMap::vector(const std::string& key, Eigen::Index size) const {
+  return reader_->vector(required(key), path_of(key), size);
+}
+Eigen::MatrixXd YamlMap::matrix(const std::string& key, MatrixForms forms) const {
+  return reader_->matrix(required(key), path_of(key), forms);
+}
+Eigen::MatrixXd YamlMap::matrix(const std::string& key, Eigen::Index rows, Eigen::Index cols,
+                                MatrixForms forms) const {
+  return reader_->matrix(required(key), path_of(key), rows, cols, forms);
 }
 
 }  // namespace hinf

@@ -1,8 +1,8 @@
-// The log-barrier objective of the path-following method (SPEC §2, solver notes):
+// The log-barrier objective of the path-following method (docs/maths.md (28)–(29), (38)):
 //   phase II:  f_t(x)    = t·cᵀx − log det(−M(x) − εI)          − log(ρ² − ‖x‖²)
 //   phase I:   f_t(x, s) = t·s   − log det(−M(x) − εI + s·I)    − log(ρ² − ‖x‖²)
-// ε is the strictness margin (USER-PAIN #2/#3), ρ the feasibility radius (as LMI Lab's
-// feasradius) that keeps the barrier bounded below. Knows nothing of Ipopt.
+// ε is the strictness margin (docs/maths.md (26), [D2], [D3]), ρ the feasibility radius
+// (as LMI Lab's feasradius; §4.3) that keeps the barrier bounded below. Knows nothing of Ipopt.
 #pragma once
 #include <Eigen/Dense>
 

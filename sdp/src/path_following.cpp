@@ -1,4 +1,4 @@
-// Path following of the log-det barrier (docs/maths.md §4): the solver loop's state in
+// Path following of the log-det barrier (docs/maths.md §5): the solver loop's state in
 // one class, PathFollower, with typed phases and engines and every tolerance a named
 // constant below.
 #include "hinf/sdp/path_following.hpp"
@@ -65,7 +65,7 @@ enum class Engine { Ipopt, QrNewton };
 enum class Recovery { Retry, AcceptLastCentred, Fail };
 
 // Gap bound at a point with Newton decrement λ < 1 (ν-self-concordant barrier),
-// docs/maths.md (32):   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
+// docs/maths.md (42):   cᵀx − c* ≤ (ν + (λ + √ν)·λ/(1 − λ)) / t,
 // from cᵀx*(t) − c* ≤ ν/t, ‖x − x*(t)‖ₓ ≤ λ/(1 − λ) and t‖c‖*ₓ ≤ λ + √ν
 // (Nesterov, Introductory Lectures on Convex Optimization, 2004, ch. 4).
 double gap_bound(double nu, double lambda2, double t) {

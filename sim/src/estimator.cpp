@@ -6,7 +6,6 @@
 #include <hinf/models/hill.hpp>
 #include <hinf/models/range_azimuth_elevation.hpp>
 #include <hinf/runtime/rekf.hpp>
-#include <hinf/synth/hill_model.hpp>
 
 namespace hinf::sim {
 namespace {
@@ -93,7 +92,7 @@ std::unique_ptr<Estimator> make_ekf_estimator(const Scenario& scenario, const Ka
 
 }  // namespace hinf::sim
 
-// ---- REKF (SPEC §4) ----------------------------------------------------------------
+// ---- REKF (docs/maths.md §13) ------------------------------------------------------
 
 namespace hinf::sim {
 namespace {
@@ -122,22 +121,21 @@ class RekfEstimator final : public Estimator {
 
  private:
   static HillRekf make(const Scenario& s, const KalmanSettings& k, const RekfSettings& r) {
-    // ΔF = T·H_a F(δ) E_a with F Fᵀ ≤ I (SPEC §3): A_k = T·H_a, L = E_a(δ̄), C_k = 0.
+    const hinf::models::HillModel model(s.orbital_rate, s.chaser_mass, s.sample_time,
+                                        hinf::models::Discretisation::ZeroOrderHold);
+    // The filter model's own uncertainty, ΔA = H F(δ) E with F Fᵀ ≤ I (docs/maths.md (67)–(74)):
+    // A_k = H = Γ·H_a of the ZOH model, L = E_a(δ̄), C_k = 0.
     const Eigen::Matrix<double, 6, 6> A_k =
-        r.delta_bar > 0 ? Eigen::Matrix<double, 6, 6>(s.sample_time * hinf::synth::hill_uncertainty_H_a(s.orbital_rate))
-                        : Eigen::Matrix<double, 6, 6>::Zero();
+        r.delta_bar > 0 ? model.uncertainty_H() : Eigen::Matrix<double, 6, 6>::Zero();
     const Eigen::Matrix<double, 6, 6> L =
-        r.delta_bar > 0 ? Eigen::Matrix<double, 6, 6>(hinf::synth::hill_uncertainty_E_a(s.orbital_rate, r.delta_bar))
-                        : Eigen::Matrix<double, 6, 6>::Zero();
+        r.delta_bar > 0 ? model.uncertainty_E(r.delta_bar) : Eigen::Matrix<double, 6, 6>::Zero();
     double gamma = r.gamma ? *r.gamma : 1.0;
     if (!r.gamma && r.delta_bar > 0) {
       const Eigen::Matrix<double, 6, 6> P0 = Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal();
       const Eigen::Matrix<double, 6, 6> LPL = L * P0 * L.transpose();
       gamma = std::sqrt(2.0 * Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(LPL).eigenvalues().maxCoeff());
     }
-    return HillRekf(hinf::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time,
-                                                     hinf::models::Discretisation::ZeroOrderHold),
-                    hinf::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
+    return HillRekf(model, hinf::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
                     Eigen::Matrix3d::Identity(), gamma, A_k, Eigen::Matrix3d::Zero(), L);
   }
   KalmanSettings settings_;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace hinf::sim {
@@ -14,33 +14,26 @@ void append_num(std::string& out, double v) {
   out += buf;
 }
 
-std::string json_num(double v) {
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+// summary.json never holds a non-finite number (docs/experiments.md, "Output files").
+Json json_num(double v) {
   if (!std::isfinite(v)) throw std::logic_error("summary.json: refusing to write a non-finite number");
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return v;
 }
 
-std::string json_opt(const std::optional<double>& v) { return v ? json_num(*v) : "null"; }
+Json json_opt(const std::optional<double>& v) { return v ? json_num(*v) : Json(nullptr); }
 
-std::string json_str(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else out += c;
-  }
-  return out + "\"";
-}
-
-std::string json_stats(const std::vector<std::optional<double>>& values) {
+Json json_stats(const std::vector<std::optional<double>>& values) {
   const MetricStats s = compute_stats(values);
-  if (s.count == 0) return "null";
-  return "{\"mean\": " + json_num(s.mean) + ", \"std\": " + json_num(s.std) + ", \"min\": " + json_num(s.min) +
-         ", \"max\": " + json_num(s.max) + ", \"count\": " + std::to_string(s.count) + "}";
+  if (s.count == 0) return nullptr;
+  Json j = Json::object();
+  j["mean"] = json_num(s.mean);
+  j["std"] = json_num(s.std);
+  j["min"] = json_num(s.min);
+  j["max"] = json_num(s.max);
+  j["count"] = s.count;
+  return j;
 }
 
 }  // namespace
@@ -95,42 +88,43 @@ std::string format_runs_csv(const std::vector<RunResult>& runs) {
 
 std::string format_summary_json(const Scenario& s, const std::vector<RunResult>& runs, const SummaryContext& ctx) {
   const MetricSettings ms = s.metric_settings();
-  std::ostringstream os;
-  os << "{\n";
-  os << "  \"format\": \"hinf-sim-summary/1\",\n";
-  os << "  \"scenario\": " << json_str(ctx.scenario_path) << ",\n";
-  os << "  \"seed\": " << ctx.seed << ",\n";
-  os << "  \"runs\": " << runs.size() << ",\n";
-  os << "  \"duration_s\": " << json_num(s.duration) << ",\n";
-  os << "  \"sample_time_s\": " << json_num(s.sample_time) << ",\n";
-  os << "  \"truth_delta\": " << json_num(s.truth_delta) << ",\n";
-  os << "  \"steady_state_start_s\": " << json_num(ms.steady_state_start_s) << ",\n";
-  os << "  \"converge_threshold_m\": " << json_num(ms.converge_threshold_m) << ",\n";
-  os << "  \"converge_window_s\": " << json_num(ms.converge_window_s) << ",\n";
-  os << "  \"gains\": {";
-  bool first = true;
+  Json j = Json::object();
+  j["format"] = "hinf-sim-summary/1";
+  j["scenario"] = ctx.scenario_path;
+  j["seed"] = ctx.seed;
+  j["runs"] = runs.size();
+  j["duration_s"] = json_num(s.duration);
+  j["sample_time_s"] = json_num(s.sample_time);
+  j["truth_delta"] = json_num(s.truth_delta);
+  j["steady_state_start_s"] = json_num(ms.steady_state_start_s);
+  j["converge_threshold_m"] = json_num(ms.converge_threshold_m);
+  j["converge_window_s"] = json_num(ms.converge_window_s);
+  Json& gains = j["gains"] = Json::object();
   for (const auto& [name, info] : ctx.gains) {
-    os << (first ? "\n" : ",\n") << "    " << json_str(name) << ": {\"origin\": " << json_str(info.origin)
-       << ", \"gamma\": " << json_opt(info.gamma) << "}";
-    first = false;
+    Json& g = gains[name] = Json::object();
+    g["origin"] = info.origin;
+    g["gamma"] = json_opt(info.gamma);
   }
-  os << (first ? "},\n" : "\n  },\n");
-  os << "  \"filters\": {";
+  Json& filters = j["filters"] = Json::object();
   const std::size_t nf = runs.empty() ? 0 : runs.front().filters.size();
   for (std::size_t f = 0; f < nf; ++f) {
-    os << (f ? ",\n" : "\n") << "    " << json_str(runs.front().filters[f].name) << ": {";
+    Json& out = filters[runs.front().filters[f].name] = Json::object();
     if (runs.size() == 1) {
       const FilterOutcome& o = runs.front().filters[f];
       const FilterMetrics& m = o.metrics;
-      os << "\"position_rms_m\": " << json_opt(m.position_rms_m) << ", \"velocity_rms_mps\": "
-         << json_opt(m.velocity_rms_mps) << ", \"position_max_m\": " << json_opt(m.position_max_m)
-         << ", \"converge_time_s\": " << json_opt(m.converge_time_s)
-         << ", \"converge_time_pointwise_s\": " << json_opt(m.converge_time_pointwise_s) << ", \"converged\": "
-         << (m.converge_time_s ? "true" : "false") << ", \"diverged\": " << (m.diverged ? "true" : "false")
-         << ", \"diverged_at_s\": " << json_opt(m.diverged_at_s) << ", \"failed_steps\": " << o.health.failed_steps;
-      if (o.health.failed_steps > 0)
-        os << ", \"first_failure\": " << json_str(o.health.first_failure)
-           << ", \"first_failure_t_s\": " << json_num(o.health.first_failure_t);
+      out["position_rms_m"] = json_opt(m.position_rms_m);
+      out["velocity_rms_mps"] = json_opt(m.velocity_rms_mps);
+      out["position_max_m"] = json_opt(m.position_max_m);
+      out["converge_time_s"] = json_opt(m.converge_time_s);
+      out["converge_time_pointwise_s"] = json_opt(m.converge_time_pointwise_s);
+      out["converged"] = m.converge_time_s.has_value();
+      out["diverged"] = m.diverged;
+      out["diverged_at_s"] = json_opt(m.diverged_at_s);
+      out["failed_steps"] = o.health.failed_steps;
+      if (o.health.failed_steps > 0) {
+        out["first_failure"] = o.health.first_failure;
+        out["first_failure_t_s"] = json_num(o.health.first_failure_t);
+      }
     } else {
       std::vector<std::optional<double>> prms, vrms, pmax, conv, conv_pointwise;
       long diverged = 0, never = 0, failed_runs = 0;
@@ -145,17 +139,18 @@ std::string format_summary_json(const Scenario& s, const std::vector<RunResult>&
         never += (!o.metrics.diverged && !o.metrics.converge_time_s) ? 1 : 0;
         failed_runs += o.health.failed_steps > 0 ? 1 : 0;
       }
-      os << "\n      \"position_rms_m\": " << json_stats(prms) << ",\n      \"velocity_rms_mps\": " << json_stats(vrms)
-         << ",\n      \"position_max_m\": " << json_stats(pmax) << ",\n      \"converge_time_s\": " << json_stats(conv)
-         << ",\n      \"converge_time_pointwise_s\": " << json_stats(conv_pointwise)
-         << ",\n      \"diverged_runs\": " << diverged << ", \"never_converged_runs\": " << never
-         << ", \"runs_with_failed_steps\": " << failed_runs << "\n    ";
+      out["position_rms_m"] = json_stats(prms);
+      out["velocity_rms_mps"] = json_stats(vrms);
+      out["position_max_m"] = json_stats(pmax);
+      out["converge_time_s"] = json_stats(conv);
+      out["converge_time_pointwise_s"] = json_stats(conv_pointwise);
+      out["diverged_runs"] = diverged;
+      out["never_converged_runs"] = never;
+      out["runs_with_failed_steps"] = failed_runs;
     }
-    os << "}";
   }
-  os << (nf ? "\n  }\n" : "}\n");
-  os << "}\n";
-  return os.str();
+  // A path that is not UTF-8 is written with U+FFFD rather than refused.
+  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace hinf::sim

@@ -21,6 +21,64 @@ std::vector<std::string> filter_names(const Scenario& s) {
   return names;
 }
 
+namespace {
+
+// The filters of the scenario, in filter_names() order.
+std::vector<std::unique_ptr<Estimator>> make_estimators(const RunSetup& setup) {
+  const Scenario& s = setup.scenario;
+  std::vector<std::unique_ptr<Estimator>> estimators;
+  if (s.filters.hinf) estimators.push_back(make_lti_estimator(setup.hinf->A_F, setup.hinf->B_F, setup.hinf->C_F, s.initial_estimate));
+  if (s.filters.published)
+    estimators.push_back(make_lti_estimator(setup.published->A_F, setup.published->B_F, setup.published->C_F, s.initial_estimate));
+  if (s.filters.ekf) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, true)));
+  if (s.filters.ekf_no_control) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, false)));
+  if (s.filters.rekf) estimators.push_back(make_rekf_estimator(s, kalman_settings_from(s, true), *s.filters.rekf));
+  return estimators;
+}
+
+// The seeded noise streams of one run (docs/maths.md §14).
+struct RunNoise {
+  RunNoise(const Scenario& s, std::uint64_t run_seed)
+      : process{NoiseChannel(s.process_noise, s.sample_time, s.steps(), derive_seed(run_seed, kProcessX)),
+                NoiseChannel(s.process_noise, s.sample_time, s.steps(), derive_seed(run_seed, kProcessY)),
+                NoiseChannel(s.process_noise, s.sample_time, s.steps(), derive_seed(run_seed, kProcessZ))},
+        range(s.range_noise, s.sample_time, s.steps(), derive_seed(run_seed, kRange)),
+        azimuth(s.azimuth_noise, s.sample_time, s.steps(), derive_seed(run_seed, kAzimuth)),
+        elevation(s.elevation_noise, s.sample_time, s.steps(), derive_seed(run_seed, kElevation)) {}
+  NoiseChannel process[3];
+  NoiseChannel range, azimuth, elevation;
+};
+
+// The run's recorded series, sized once.
+struct RunRecord {
+  RunRecord(const std::vector<std::string>& names, long steps) : pos_err(names.size()), vel_err(names.size()) {
+    traj.t.reserve(steps);
+    traj.truth.reserve(steps);
+    traj.measurement.reserve(steps);
+    traj.thrust.reserve(steps);
+    traj.filters.resize(names.size());
+    for (std::size_t f = 0; f < names.size(); ++f) {
+      traj.filters[f].name = names[f];
+      traj.filters[f].estimate.reserve(steps);
+    }
+  }
+  Trajectory traj;
+  std::vector<std::vector<double>> pos_err, vel_err;
+};
+
+// Thrust u(k) = K x̂(k) (docs/maths.md (66)), held over the sample; x̂ is the truth or the
+// hinf estimate, as the scenario says.
+Vector3 thrust(const Scenario& s, const Vector6& x, const Vector6& hinf_estimate, double t) {
+  if (s.control_law != ControlLaw::StateFeedback) return Vector3::Zero();
+  const Vector6& xc = s.control_input == ControlInput::Truth ? x : hinf_estimate;
+  if (!xc.allFinite())
+    throw SimulationError("thrust from the hinf estimate is undefined at t = " + std::to_string(t) +
+                          " s: the hinf filter diverged");
+  return s.K * xc;
+}
+
+}  // namespace
+
 RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_trajectory) {
   const Scenario& s = setup.scenario;
   const long steps = s.steps();
@@ -29,36 +87,12 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
   // Truth: the exact two-body relative motion about a target whose rate is ω₀(1+δ).
   const RelativeTwoBody truth_model(s.mu, s.orbital_rate * (1.0 + s.truth_delta));
   const hinf::models::RangeAzimuthElevation sensor(s.C_bl);
-
-  NoiseChannel process[3] = {NoiseChannel(s.process_noise, T, steps, derive_seed(run_seed, kProcessX)),
-                             NoiseChannel(s.process_noise, T, steps, derive_seed(run_seed, kProcessY)),
-                             NoiseChannel(s.process_noise, T, steps, derive_seed(run_seed, kProcessZ))};
-  NoiseChannel range(s.range_noise, T, steps, derive_seed(run_seed, kRange));
-  NoiseChannel azimuth(s.azimuth_noise, T, steps, derive_seed(run_seed, kAzimuth));
-  NoiseChannel elevation(s.elevation_noise, T, steps, derive_seed(run_seed, kElevation));
-
-  // The filters, in filter_names() order.
-  std::vector<std::unique_ptr<Estimator>> estimators;
+  RunNoise noise(s, run_seed);
+  const std::vector<std::unique_ptr<Estimator>> estimators = make_estimators(setup);
   const std::vector<std::string> names = filter_names(s);
-  if (s.filters.hinf) estimators.push_back(make_lti_estimator(setup.hinf->A_F, setup.hinf->B_F, setup.hinf->C_F, s.initial_estimate));
-  if (s.filters.published)
-    estimators.push_back(make_lti_estimator(setup.published->A_F, setup.published->B_F, setup.published->C_F, s.initial_estimate));
-  if (s.filters.ekf) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, true)));
-  if (s.filters.ekf_no_control) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, false)));
-  if (s.filters.rekf) estimators.push_back(make_rekf_estimator(s, kalman_settings_from(s, true), *s.filters.rekf));
   const std::size_t nf = estimators.size();
-
-  Trajectory traj;
-  traj.t.reserve(steps);
-  traj.truth.reserve(steps);
-  traj.measurement.reserve(steps);
-  traj.thrust.reserve(steps);
-  traj.filters.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    traj.filters[f].name = names[f];
-    traj.filters[f].estimate.reserve(steps);
-  }
-  std::vector<std::vector<double>> pos_err(nf), vel_err(nf);
+  RunRecord rec(names, steps);
+  Trajectory& traj = rec.traj;
   const Vector6 nan6 = Vector6::Constant(std::numeric_limits<double>::quiet_NaN());
 
   Vector6 x = s.initial_state;
@@ -68,7 +102,7 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
 
     // Sensor: ρ, α, β of the true position (C_bl applied), noise added, converted back.
     MeasurementSample y;
-    y.rae = sensor.h(x) + Vector3(range.next(), azimuth.next(), elevation.next());
+    y.rae = sensor.h(x) + Vector3(noise.range.next(), noise.azimuth.next(), noise.elevation.next());
     y.cartesian = sensor.position_from_measurement(y.rae);
 
     Vector6 hinf_estimate = nan6;
@@ -85,30 +119,20 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
       }
       if (names[f] == "hinf") hinf_estimate = e;
       track.estimate.push_back(e);
-      pos_err[f].push_back((e.head<3>() - x.head<3>()).norm());
-      vel_err[f].push_back((e.tail<3>() - x.tail<3>()).norm());
+      rec.pos_err[f].push_back((e.head<3>() - x.head<3>()).norm());
+      rec.vel_err[f].push_back((e.tail<3>() - x.tail<3>()).norm());
     }
-
-    // Thrust u(k) = K x̂(k) (SPEC §3 eq. 3), held over the sample.
-    Vector3 u = Vector3::Zero();
-    if (s.control_law == ControlLaw::StateFeedback) {
-      const Vector6& xc = s.control_input == ControlInput::Truth ? x : hinf_estimate;
-      if (!xc.allFinite())
-        throw SimulationError("thrust from the hinf estimate is undefined at t = " + std::to_string(t) +
-                              " s: the hinf filter diverged");
-      u = s.K * xc;
-    }
-
+    const Vector3 u = thrust(s, x, hinf_estimate, t);
     traj.t.push_back(t);
     traj.truth.push_back(x);
     traj.measurement.push_back(y);
     traj.thrust.push_back(u);
-
     for (std::size_t f = 0; f < nf; ++f)
       if (!traj.filters[f].diverged_at) estimators[f]->advance(u, t);
 
     // Truth from t_k to t_{k+1}: thrust and process acceleration held (zero-order hold).
-    const Vector3 accel = u / s.chaser_mass + Vector3(process[0].next(), process[1].next(), process[2].next());
+    const Vector3 accel =
+        u / s.chaser_mass + Vector3(noise.process[0].next(), noise.process[1].next(), noise.process[2].next());
     x = truth_model.propagate(x, accel, T, s.integrator_substeps);
   }
 
@@ -118,7 +142,7 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
   for (std::size_t f = 0; f < nf; ++f) {
     traj.filters[f].health = estimators[f]->health();
     result.filters.push_back(
-        {names[f], compute_metrics(traj.t, pos_err[f], vel_err[f], traj.filters[f].diverged_at, ms),
+        {names[f], compute_metrics(traj.t, rec.pos_err[f], rec.vel_err[f], traj.filters[f].diverged_at, ms),
          estimators[f]->health()});
   }
   if (keep_trajectory) result.trajectory = std::move(traj);

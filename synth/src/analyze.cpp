@@ -18,7 +18,7 @@ double norm_or_inf(const StateSpace& es, double rho, double* peak = nullptr) {
 }
 }  // namespace
 
-FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillModel>& hill,
+FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantSpec>& hill,
                               const Filter& filter, const Settings& settings, int delta_points) {
   validate_plant(plant);
   FilterAnalysis a;

@@ -32,6 +32,59 @@ void kv(YAML::Emitter& out, const char* key, const T& v) {
   out << YAML::Key << key << YAML::Value << v;
 }
 
+// The certificate, check by check (docs/maths.md §7), then the recovery's conditioning.
+void emit_certificate(YAML::Emitter& out, const Certificate& c) {
+  out << YAML::Key << "certificate" << YAML::Value << YAML::BeginMap;
+  kv(out, "passed", c.passed);
+  kv(out, "gamma", c.gamma);
+  kv(out, "lmi_negative_definite", c.lmi_negative_definite);  // check 1
+  kv(out, "lmi_max_eigenvalue", c.lmi_max_eig);
+  kv(out, "lmi_max_eigenvalue_relative", c.lmi_max_eig_relative);
+  kv(out, "schur_stable", c.schur_stable);  // check 2
+  kv(out, "spectral_radius_nominal", c.spectral_radius_nominal);
+  kv(out, "spectral_radius_sampled_max", c.spectral_radius_sampled_max);
+  kv(out, "stability_samples", c.stability_samples);
+  kv(out, "hinf_norm_nominal", c.hinf_norm_nominal);  // check 3
+  kv(out, "hinf_norm_peak_frequency", c.hinf_norm_peak_frequency);
+  kv(out, "hinf_norm_ok", c.hinf_norm_ok);
+  kv(out, "robust_bound", c.robust_bound);  // check 4
+  kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
+  kv(out, "robust_multiplier", c.robust_multiplier);
+  kv(out, "robust_scaled_norm", c.robust_scaled_norm);
+  kv(out, "cond_S", c.cond_S);
+  kv(out, "cond_R_minus_S", c.cond_R_minus_S);
+  kv(out, "norm_A_F", c.norm_A_F);
+  kv(out, "norm_B_F", c.norm_B_F);
+  kv(out, "norm_C_F", c.norm_C_F);
+  out << YAML::EndMap;
+}
+
+// How the solver ran and with what it was built; the timing last (the only bytes that
+// differ between two runs).
+void emit_solver(YAML::Emitter& out, const SolverInfo& s) {
+  out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
+  kv(out, "method", "log-det barrier path following, Newton steps by Ipopt");
+  kv(out, "status", sdp::status_message(s.status));
+  kv(out, "ipopt_version", sdp::newton_engine_version());
+  kv(out, "eigen_version", std::to_string(EIGEN_WORLD_VERSION) + "." +
+                               std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION));
+  kv(out, "yaml_cpp", "0.7");
+  kv(out, "newton_iterations", s.newton_iterations);
+  kv(out, "phase1_iterations", s.phase1_iterations);
+  kv(out, "centerings", s.centerings);
+  kv(out, "optimal_gamma", s.optimal_gamma);
+  kv(out, "relative_gap", s.relative_gap);
+  kv(out, "lower_bound_gamma_squared", s.dual_bound_gamma_squared);
+  kv(out, "lmi_order", s.lmi_order);
+  kv(out, "variables", s.variables);
+  kv(out, "lmi_margin", s.lmi_margin);
+  kv(out, "he_balance", s.he_balance);
+  out << YAML::EndMap;
+  out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
+  kv(out, "solve_time_s", s.time_s);
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& pv) {
@@ -55,52 +108,8 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   emit_matrix(out, "B_F", r.filter.B_F);
   emit_matrix(out, "C_F", r.filter.C_F);
   out << YAML::EndMap;
-  const Certificate& c = r.certificate;
-  out << YAML::Key << "certificate" << YAML::Value << YAML::BeginMap;
-  kv(out, "passed", c.passed);
-  kv(out, "gamma", c.gamma);
-  kv(out, "lmi_negative_definite", c.lmi_negative_definite);
-  kv(out, "lmi_max_eigenvalue", c.lmi_max_eig);
-  kv(out, "lmi_max_eigenvalue_relative", c.lmi_max_eig_relative);
-  kv(out, "schur_stable", c.schur_stable);
-  kv(out, "spectral_radius_nominal", c.spectral_radius_nominal);
-  kv(out, "spectral_radius_sampled_max", c.spectral_radius_sampled_max);
-  kv(out, "stability_samples", c.stability_samples);
-  kv(out, "hinf_norm_nominal", c.hinf_norm_nominal);
-  kv(out, "hinf_norm_peak_frequency", c.hinf_norm_peak_frequency);
-  kv(out, "hinf_norm_ok", c.hinf_norm_ok);
-  kv(out, "robust_bound", c.robust_bound);
-  kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
-  kv(out, "robust_multiplier", c.robust_multiplier);
-  kv(out, "robust_scaled_norm", c.robust_scaled_norm);
-  kv(out, "cond_S", c.cond_S);
-  kv(out, "cond_R_minus_S", c.cond_R_minus_S);
-  kv(out, "norm_A_F", c.norm_A_F);
-  kv(out, "norm_B_F", c.norm_B_F);
-  kv(out, "norm_C_F", c.norm_C_F);
-  out << YAML::EndMap;
-  const SolverInfo& s = r.solver;
-  out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
-  kv(out, "method", "log-det barrier path following, Newton steps by Ipopt");
-  kv(out, "status", sdp::status_message(s.status));
-  kv(out, "ipopt_version", sdp::newton_engine_version());
-  kv(out, "eigen_version", std::to_string(EIGEN_WORLD_VERSION) + "." +
-                               std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION));
-  kv(out, "yaml_cpp", "0.7");
-  kv(out, "newton_iterations", s.newton_iterations);
-  kv(out, "phase1_iterations", s.phase1_iterations);
-  kv(out, "centerings", s.centerings);
-  kv(out, "optimal_gamma", s.optimal_gamma);
-  kv(out, "relative_gap", s.relative_gap);
-  kv(out, "lower_bound_gamma_squared", s.dual_bound_gamma_squared);
-  kv(out, "lmi_order", s.lmi_order);
-  kv(out, "variables", s.variables);
-  kv(out, "lmi_margin", s.lmi_margin);
-  kv(out, "he_balance", s.he_balance);
-  out << YAML::EndMap;
-  out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
-  kv(out, "solve_time_s", s.time_s);
-  out << YAML::EndMap;
+  emit_certificate(out, r.certificate);
+  emit_solver(out, r.solver);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

@@ -12,7 +12,7 @@ namespace {
 
 // Below this the strictness margin is lost in the rounding of the Cholesky test of
 // −M(x) − εI (M of order ~1 after equilibration): a "strict" LMI would silently become
-// non-strict (USER-PAIN #3).
+// non-strict (docs/maths.md [D3]).
 constexpr double kSolverTolerance = 1e-14;
 
 [[noreturn]] void fail(const char* field, const std::string& value, const std::string& why) {

@@ -1,8 +1,9 @@
-// The synthesis pipeline (SPEC §2): pre-flight checks, Theorem 1 / Corollary 1 by the
-// barrier method, recovery (eq. 21), and the independent certificate.
+// The synthesis pipeline (docs/maths.md §2.5–§7): pre-flight checks, Theorem 1 /
+// Corollary 1 by the barrier method, recovery (22), and the independent certificate.
 #include <cmath>
 #include <sstream>
 
+#include "hinf/common/number_text.hpp"
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/sdp/path_following.hpp"
 #include "hinf/lmi/sdpa_format.hpp"
@@ -21,15 +22,10 @@ using Eigen::VectorXd;
 
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
+std::string fmt(double v) { return hinf::significant_text(v, 10); }
 
-// Pre-flight (USER-PAIN #10): the error system contains the plant state, so the plant
-// must be Schur stable for every admissible F (SPEC §1). Name the offending mode.
+// Pre-flight (docs/maths.md [D10]): the error system contains the plant state, so the plant
+// must be Schur stable for every admissible F (docs/maths.md §2.5). Name the offending mode.
 void preflight(const Plant& plant, const Settings& settings) {
   const Eigen::EigenSolver<MatrixXd> es(plant.A, false);
   const Eigen::VectorXcd ev = es.eigenvalues();
@@ -77,7 +73,7 @@ ErrorCode error_code_for(sdp::Status status) {
   return status == sdp::Status::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
 }
 
-// The robust analysis LMI (SPEC §2, eq. 17 with the S-procedure) for a fixed filter,
+// The robust analysis LMI docs/maths.md (50) (Lemma 1 with the S-procedure) for a fixed filter,
 // minimising γ² by the barrier method (`analyze`; the certificate uses the bounded-real
 // form of the same LMI instead, certify/scaled_bounded_real.hpp). Returns γ².
 double solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
@@ -100,7 +96,7 @@ double robust_bound(const Plant& plant, const Filter& filter, const Settings& se
 }
 
 namespace {
-// Checks 2–4 of SPEC §2 at γ; none uses the synthesis solver's numbers (SPEC §2).
+// Checks 2–4 (docs/maths.md §7.2–§7.4) at γ; none uses the synthesis solver's numbers (§7).
 Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings) {
   Certificate c;
   c.gamma = gamma;
@@ -150,8 +146,8 @@ sdp::ProgressObserver staged(const IterationObserver& observer, SolveStage stage
   return [observer, stage](const sdp::Progress& p) { observer(IterationReport{stage, p}); };
 }
 
-// Corollary 1: minimise γ² subject to LMI (20). Throws with the solver's reason if it
-// does not end Solved.
+// Corollary 1, docs/maths.md (21): minimise γ² subject to LMI (18). Throws with the
+// solver's reason if it does not end Solved.
 sdp::Solution solve_corollary1(const Theorem1Lmi& T, const Settings& settings,
                                const IterationObserver& observer) {
   const VectorXd c = T.lmi.cost_of(T.g);
@@ -187,13 +183,13 @@ sdp::Solution solve_backoff(const Theorem1Lmi& Tb, double gamma2_backoff, const 
   return sol;
 }
 
-// Checks 1–4 of the certificate (docs/maths.md §5) at the returned point. Only the
+// Checks 1–4 of the certificate (docs/maths.md §7) at the returned point. Only the
 // rounding of the recovery (S⁻¹ near the boundary) can make the recovered filter miss
 // check 4 by a hair; then it is tried once more at (1 + relative_gap_tol)·γ², still
 // within the solver's accuracy.
 void certify_result(const Plant& plant, const certify::Theorem1Point& pt, const Settings& settings,
                     SynthesisResult& res) {
-  // check 1: LMI (20) at the returned point (with g = certified γ²), assembled densely
+  // check 1: LMI docs/maths.md (18) at the returned point (with g = certified γ²), assembled densely
   const certify::DefinitenessCheck lmi_check =
       certify::check_negative_definite(certify::theorem1_matrix(plant, pt), 0.0);
   res.gamma_squared = pt.g;

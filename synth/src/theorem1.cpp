@@ -26,7 +26,7 @@ Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
   Theorem1Lmi T;
   T.lmi = lmi::LmiProblem(blocks);
   T.he_scale = s;
-  auto& M = T.lmi;  // M(x), docs/maths.md (20)
+  auto& M = T.lmi;  // M(x), docs/maths.md (18)
   T.R = M.add_symmetric("R", n);
   T.S = M.add_symmetric("S", n);
   T.AFbar = M.add_full("AF_bar", n, n);
@@ -109,7 +109,7 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
   const int n2 = 2 * n;
-  // error system, SPEC eqs. (13)–(15)
+  // error system, docs/maths.md (9)–(11)
   MatrixXd A0 = MatrixXd::Zero(n2, n2);
   A0.topLeftCorner(n, n) = P.A;
   A0.bottomLeftCorner(n, n) = F.B_F * P.C;
@@ -124,7 +124,7 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
   AnalysisLmi A;
   A.lmi = lmi::LmiProblem(blocks);
   A.he_scale = s;
-  auto& M = A.lmi;  // M(x), docs/maths.md (20)
+  auto& M = A.lmi;  // M(x), docs/maths.md (50)
   A.P = M.add_symmetric("P", n2);
   if (unc) A.lambda = M.add_scalar("lambda");
   A.g = M.add_scalar("gamma_squared");

@@ -1,6 +1,6 @@
-// Theorem 1 of seed 000 (SPEC §2, LMI (20)) written once, block by block, as data for
-// the generic LMI layer; and the robust analysis LMI of Lemma 1 (eq. 17) with the
-// S-procedure for a fixed filter (SPEC §2, check 4).
+// Theorem 1 of Sun et al. 2011 (the LMI docs/maths.md (18)) written once, block by block,
+// as data for the generic LMI layer; and the robust analysis LMI docs/maths.md (50)
+// (Lemma 1 with the S-procedure) for a fixed filter (check 4, docs/maths.md §7.4).
 #pragma once
 #include "hinf/models/plant.hpp"
 #include "hinf/certify/dense_lmi.hpp"
@@ -8,7 +8,8 @@
 
 namespace hinf::synth {
 
-// H/E balance: s with ‖sH‖ = ‖E/s‖ (SPEC §3: leaves ΔA = HFE unchanged). 1 if no uncertainty.
+// H/E balance: s with ‖sH‖ = ‖E/s‖ (docs/maths.md (24): leaves ΔA = HFE unchanged).
+// 1 if no uncertainty.
 double he_balance(const hinf::Plant& plant);
 
 struct Theorem1Lmi {
@@ -21,7 +22,7 @@ struct Theorem1Lmi {
 // Blocks n, n, n, n, p, q, l, j (the last only with uncertainty).
 Theorem1Lmi build_theorem1(const hinf::Plant& plant, double he_scale);
 
-// The γ back-off problem (USER-PAIN #6): g = γ_b² fixed, and a scalar `margin` with
+// The γ back-off problem (docs/maths.md (44), [D6]): g = γ_b² fixed, and a scalar `margin` with
 // M(x) ⪯ margin·I on every block; minimising `margin` maximises the LMI's margin.
 Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double he_scale, double g_fixed);
 
@@ -30,7 +31,7 @@ Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double he_scale, do
 certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const hinf::Plant& plant,
                                       const Eigen::VectorXd& x, double g);
 
-// Filter recovery, docs/maths.md (21): A_F = S⁻¹Ā_F, B_F = S⁻¹B̄_F, C_F = C̄_F, by
+// Filter recovery, docs/maths.md (22): A_F = S⁻¹Ā_F, B_F = S⁻¹B̄_F, C_F = C̄_F, by
 // Cholesky solves with S. Throws Error(NumericalFailure) if S is not positive definite.
 hinf::Filter recover_filter(const certify::Theorem1Point& pt);
 
@@ -40,13 +41,13 @@ struct AnalysisLmi {
   double he_scale = 1;
 };
 
-// Blocks 2n, 2n, p+q, l, j:
+// Blocks 2n, 2n, p+q, l, j (docs/maths.md (50)):
 //   [ −P   PĀ₀        PB̄    0    PH̄  ]
 //   [  ∗  −P+λĒᵀĒ     0     C̄ᵀ   0   ]
 //   [  ∗   ∗         −gI    0    0   ]   < 0
 //   [  ∗   ∗          ∗    −I    0   ]
 //   [  ∗   ∗          ∗     ∗   −λI  ]
-// with the error system of SPEC eqs. (13)–(15), H̄ = [H; 0], Ē = [E, 0].
+// with the error system of docs/maths.md (9)–(11), H̄ = [H; 0], Ē = [E, 0].
 AnalysisLmi build_analysis_lmi(const hinf::Plant& plant, const hinf::Filter& filter,
                                double he_scale);
 

@@ -1,4 +1,4 @@
-// Structural checks of the uncertain plant of SPEC §1:
+// Structural checks of the uncertain plant of docs/maths.md (1)–(4):
 //   A n×n, B n×p, C m×n, D m×q, L l×n, H n×j, E k×n (H and E both present or both absent).
 #include <cmath>
 #include <string>

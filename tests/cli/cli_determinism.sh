@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Two `solve` runs of the same config must give byte-identical gains files apart from
-# the `timing:` section (USER-PAIN #13), and leave nothing but the two files behind.
+# the `timing:` section (docs/maths.md [D13]), and leave nothing but the two files behind.
 #   cli_determinism.sh EXE CONFIG
 set -u
 exe=$1 cfg=$2

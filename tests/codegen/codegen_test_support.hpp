@@ -1,5 +1,5 @@
 // Helpers for the codegen tests: temporary directories, running commands,
-// seeded random gains, an independent reference implementation of SPEC eq. (12).
+// seeded random gains, an independent reference implementation of docs/maths.md (5)-(6).
 #pragma once
 #include <Eigen/Dense>
 #include <cstdint>
@@ -43,7 +43,7 @@ std::string gains_yaml(const runtime_yaml::GainsFile& g);
 // Deterministic inputs uniform in [-1, 1) (std::mt19937_64, own mapping).
 Eigen::MatrixXd random_matrix(std::uint64_t seed, Eigen::Index rows, Eigen::Index cols);
 
-// Eq. (12) in double with an Eigen loop: x(0) = pinv(C) z0 (pinv by JacobiSVD),
+// docs/maths.md (5)-(6) in double with an Eigen loop: x(0) = pinv(C) z0 (pinv by JacobiSVD),
 // row k of the result = z(k) = C x(k), x(k+1) = A x(k) + B y(k).
 Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
                                   const Eigen::MatrixXd& C, const Eigen::VectorXd& z0,

@@ -1,7 +1,7 @@
 // Generated C code (the compiled-code tests generate it with the real `hinf-synth codegen`
 // from seeded random gains the generator has never seen, and the paper's gains):
 // compiled with gcc and clang under strict warnings, linked into
-// a harness and compared with an independent Eigen evaluation of SPEC eq. (12);
+// a harness and compared with an independent Eigen evaluation of docs/maths.md (5)–(6);
 // no heap / libm symbols; cppcheck clean; two filters in one binary; deterministic.
 #include <gtest/gtest.h>
 

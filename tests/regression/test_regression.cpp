@@ -1,4 +1,4 @@
-// The golden-file workflow through the real hinf-synth binary (USER-PAIN #14):
+// The golden-file workflow through the real hinf-synth binary (docs/maths.md [D14]):
 //  - `check` compares filters as transfer functions: another realisation of the golden
 //    filter passes, a 1% change of B_F or of gamma fails (exit 1);
 //  - `verify` accepts the gains `solve` wrote, refuses a claimed gamma below what the
@@ -129,7 +129,7 @@ TEST(GoldenCheck, BadInputExits2) {
   EXPECT_EQ(synth("check " + kConfig + " --golden " + (dir / "missing.yaml")).exit_code, 2);
 }
 
-// USER-PAIN #14: a golden check must not break across platforms. Another platform (BLAS,
+// docs/maths.md [D14]: a golden check must not break across platforms. Another platform (BLAS,
 // MUMPS, compiler) perturbs the computation at the rounding level; the closest portable
 // stand-in is a config with one coefficient moved by one ulp (a relative change of 1e-16,
 // far below anything physical). `check` against the unchanged golden must still say

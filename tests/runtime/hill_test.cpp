@@ -1,4 +1,4 @@
-// HillModel (SPEC §3) against the scalar Hill/CW equations written out here, the
+// HillModel (docs/maths.md §9) against the scalar Hill/CW equations written out here, the
 // closed-form Clohessy-Wiltshire transition matrix, and RK4 integration.
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@ using Input = HillModel::Input;
 
 namespace {
 
-// The SPEC §3 equations as scalars: xdd = 3w^2 x + 2w yd + Fx/m, ydd = -2w xd + Fy/m,
+// The equations docs/maths.md (62) as scalars: xdd = 3w^2 x + 2w yd + Fx/m, ydd = -2w xd + Fy/m,
 // zdd = -w^2 z + Fz/m, with thrust F = u_ext + K s.
 State rhs(const State& s, const Input& u_ext, double w, double m, const HillModel::Gain& K) {
   const Input F = u_ext + K * s;

@@ -1,4 +1,4 @@
-// LtiFilter / FixedLtiFilter against SPEC §1 eq. (12), checked with hand-written loops and
+// LtiFilter / FixedLtiFilter against docs/maths.md (5)–(6), checked with hand-written loops and
 // closed forms (not with the filter's own Eigen expressions).
 #include <gtest/gtest.h>
 
@@ -29,7 +29,7 @@ Eigen::MatrixXd random_stable(int n, std::mt19937& g) {
   return 0.9 * A / A.norm();
 }
 
-// The paper's published gains (SPEC §3).
+// The paper's published gains (docs/maths.md (78)–(80)).
 void paper_gains(Eigen::MatrixXd& A_F, Eigen::MatrixXd& B_F, Eigen::MatrixXd& C_F) {
   A_F.resize(6, 6);
   A_F << -0.6126, -0.0053, -0.0046, 0.1, -1.7e-6, -1.0e-6,  //

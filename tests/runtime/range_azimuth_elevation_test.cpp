@@ -1,4 +1,4 @@
-// RangeAzimuthElevation (SPEC §3 eq. 7): hand-computed values, Jacobian against central
+// RangeAzimuthElevation (docs/maths.md (81)–(84)): hand-computed values, Jacobian against central
 // finite differences, round trip with the Cartesian conversion, and the converted
 // position covariance against the inverse of the measurement Jacobian.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Rekf (SPEC §4): reduces to the Joseph-form EKF for A_k = C_k = L = 0; matches the
-// SPEC formulas evaluated with explicit inverses; reports the gamma condition.
+// Rekf (docs/maths.md §13): reduces to the Joseph-form EKF for A_k = C_k = L = 0; matches the
+// formulas docs/maths.md (95)–(98) evaluated with explicit inverses; reports the gamma condition.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,12 +88,12 @@ TEST(Rekf, MatchesSpecFormulasWithExplicitInverses) {
   for (int k = 0; k < 100; ++k) {
     const Eigen::Vector3d u = 0.1 * gauss6(g).head<3>();
     const Eigen::Vector3d y = x.head<3>() + gauss6(g).head<3>();
-    // (14)
+    // docs/maths.md (96)
     x = F * x + hill.G() * u;
     P = F * M(P) * F.transpose() + g2 * A_k * A_k.transpose() + Q;
     ASSERT_EQ(rekf.predict(u), RekfStatus::Ok);
     ASSERT_LE(rel(rekf.P(), P), 1e-10) << k;
-    // (16), (15)
+    // docs/maths.md (97), (98)
     const Mat6 Mp = M(P);
     const Eigen::Matrix3d Rb = g2 * C_k * C_k.transpose() + R;
     const Eigen::Matrix<double, 6, 3> K = Mp * H.transpose() * (H * Mp * H.transpose() + Rb).inverse();

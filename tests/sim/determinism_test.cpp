@@ -28,7 +28,7 @@ measurement:
 filters: {ekf: {}, ekf_no_control: {}, rekf: {}}
 )",
                                   "/tmp/determinism.yaml");
-  // The SPEC §3 published gains as the LTI filter (no file needed).
+  // The published gains of docs/maths.md (78)–(80) as the LTI filter (no file needed).
   LtiGains g;
   g.A_F.resize(6, 6);
   g.A_F << -0.6126, -0.0053, -0.0046, 0.1, -1.7e-6, -1.0e-6, -0.0052, -0.6083, -0.0035, -1.5e-6, 0.1, -1.4e-6,

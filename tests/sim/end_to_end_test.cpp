@@ -1,7 +1,7 @@
 // End-to-end: hinf-sim on every configs/scenarios/*.yaml (shortened to 300 s), checked
 // from its output files only, without the sim's code:
 //  - the files exist, PNGs are PNGs, summary.json has finite metrics for hinf, ekf, rekf;
-//  - the hinf_* (and published_*) columns are an exact replay of SPEC eq. (12) from
+//  - the hinf_* (and published_*) columns are an exact replay of docs/maths.md (5)–(6) from
 //    gains.yaml and the logged meas_* columns: x_F(0) = C_F⁺ z0, z_F(k) = C_F x_F(k),
 //    x_F(k+1) = A_F x_F(k) + B_F y(k), to 1e-9;
 //  - Monte-Carlo output is the same for --jobs 1 and --jobs 2;
@@ -91,7 +91,7 @@ double replay_error(const Csv& csv, const fs::path& gains_file, const std::strin
   const Eigen::MatrixXd A_F = yaml_matrix(g["filter"]["A_F"]), B_F = yaml_matrix(g["filter"]["B_F"]),
                         C_F = yaml_matrix(g["filter"]["C_F"]);
   Eigen::VectorXd z0(6);
-  z0 << 630, 520, 1000, 0, 0, 0;  // SPEC §3 initial estimate (the scenarios' default)
+  z0 << 630, 520, 1000, 0, 0, 0;  // initial estimate of docs/maths.md §9.8 (the scenarios' default)
   Eigen::VectorXd x = C_F.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(z0);  // C_F⁺ z0
   const int my = csv.col("meas_x"), c0 = csv.col(prefix + "_x");
   EXPECT_GE(my, 0);

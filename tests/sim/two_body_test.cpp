@@ -47,7 +47,7 @@ TEST(TwoBody, MatchesClohessyWiltshireToSecondOrderInSeparation) {
   const RelativeTwoBody m(kMu, kOmega);
   const double horizon = 2000.0;  // s (ωt ≈ 0.15 rad)
   Vector6 dir;
-  dir << 600, 550, 1040, 0.02, -0.08, 0.03;  // SPEC §3 initial state as the shape
+  dir << 600, 550, 1040, 0.02, -0.08, 0.03;  // initial state of docs/maths.md §9.8 as the shape
   double err_prev = 0;
   for (double scale : {1.0, 2.0, 4.0}) {
     const Vector6 s0 = scale * dir;

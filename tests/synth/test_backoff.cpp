@@ -1,4 +1,4 @@
-// γ back-off (USER-PAIN #6): the filter recovered at γ_b = (1 + b)·γ* from the point of
+// γ back-off (docs/maths.md §6, [D6]): the filter recovered at γ_b = (1 + b)·γ* from the point of
 // largest LMI margin is certified at γ_b and is better conditioned than the γ*-optimal one.
 #include <gtest/gtest.h>
 

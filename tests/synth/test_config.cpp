@@ -11,7 +11,7 @@
 #include <string>
 
 #include "hinf/common/suggest.hpp"
-#include "hinf/common/sha256.hpp"
+#include "config/sha256.hpp"  // private to synth (hinf_synth_private)
 #include "hinf/common/number_text.hpp"
 #include "hinf/synth/config.hpp"
 #include "hinf/common/error.hpp"
@@ -92,7 +92,7 @@ TEST(Config, BaseSystemConfigParses) {
   EXPECT_EQ(cfg.plant.A(0, 1), 0.1);
   EXPECT_EQ(cfg.plant.A(1, 0), 0.0);
   EXPECT_EQ(cfg.path, "ok.yaml");
-  EXPECT_EQ(cfg.sha256, hinf::sha256_hex(kSystem));
+  EXPECT_EQ(cfg.sha256, hinf::synth::sha256_hex(kSystem));
 }
 
 TEST(Config, ExampleMatricesConfigIsRobustlySchurStable) {
@@ -148,7 +148,7 @@ TEST(Config, OrbitalPeriodGivesTwoPiOverPeriod) {
   const auto cfg = parse_config(yaml, "p.yaml");
   ASSERT_TRUE(cfg.hill.has_value());
   EXPECT_DOUBLE_EQ(cfg.hill->orbital_rate, 2 * M_PI / 86400);
-  EXPECT_EQ(cfg.hill->discretisation, hinf::synth::HillModel::Discretisation::Zoh);
+  EXPECT_EQ(cfg.hill->discretisation, hinf::models::Discretisation::ZeroOrderHold);
   EXPECT_TRUE(cfg.hill->K.size() == 0);  // absent K = no control
 }
 
@@ -156,7 +156,7 @@ TEST(Config, Sha256IsOfTheExactFileBytes) {
   const std::string path = kSource + "/configs/paper-dbar0.05.yaml";
   const auto cfg = hinf::synth::load_config(path);
   EXPECT_EQ(cfg.path, path);
-  EXPECT_EQ(cfg.sha256, hinf::sha256_hex(read_bytes(path)));
+  EXPECT_EQ(cfg.sha256, hinf::synth::sha256_hex(read_bytes(path)));
   EXPECT_EQ(cfg.sha256.size(), 64u);
   // a comment changes the bytes, hence the hash, not the plant
   const auto other = parse_config(read_bytes(path) + "# comment\n", "x.yaml");
@@ -181,7 +181,7 @@ TEST(NumberText, ShortestRoundTripTextWithoutNeedlessExponents) {
 }
 
 TEST(Sha256, FipsTestVectors) {
-  using hinf::sha256_hex;
+  using hinf::synth::sha256_hex;
   EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
   EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),

@@ -1,4 +1,4 @@
-// The Hill/CW plant builder (SPEC §3) against closed forms: the scalar CW equations,
+// The Hill/CW plant builder (docs/maths.md §9.4–§9.5) against closed forms: the scalar CW equations,
 // the exact uncertain discrete A, Taylor bounds of the matrix exponential.
 #include <gtest/gtest.h>
 
@@ -6,20 +6,20 @@
 #include <string>
 
 #include "hinf/synth/config.hpp"
-#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/hill_plant.hpp"
 #include "hinf/common/error.hpp"
 
 namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-using hinf::synth::HillModel;
+using hinf::synth::HillPlantSpec;
 
-constexpr double kOmega0 = 7.2722e-5;  // SPEC §3 table
+constexpr double kOmega0 = 7.2722e-5;  // docs/maths.md §9.8 table
 constexpr double kMass = 1000;
 constexpr double kT = 0.1;
 
-// K of SPEC §3, typed here independently of configs/paper-*.yaml.
+// K of docs/maths.md (77), typed here independently of configs/paper-*.yaml.
 MatrixXd paper_K() {
   MatrixXd K(3, 6);
   K << -2.2541, -0.0071, -0.0072, -22.3975, 2.3256, 1.9369,  //
@@ -28,8 +28,8 @@ MatrixXd paper_K() {
   return K;
 }
 
-HillModel paper_model(double delta_bar, HillModel::Discretisation d) {
-  HillModel m;
+HillPlantSpec paper_model(double delta_bar, hinf::models::Discretisation d) {
+  HillPlantSpec m;
   m.orbital_rate = kOmega0;
   m.chaser_mass = kMass;
   m.K = paper_K();
@@ -43,7 +43,7 @@ HillModel paper_model(double delta_bar, HillModel::Discretisation d) {
   return m;  // C, L empty: the paper's defaults
 }
 
-// ẋ from the scalar CW equations of SPEC §3 with u = K x:
+// ẋ from the scalar CW equations docs/maths.md (62) with u = K x:
 //   ẍ = 3ω²x + 2ωẏ + F_x/m,  ÿ = −2ωẋ + F_y/m,  z̈ = −ω²z + F_z/m.
 VectorXd cw_rhs(const VectorXd& s, double w, double m, const MatrixXd& K) {
   const VectorXd u = K * s;
@@ -64,13 +64,13 @@ double norm1(const MatrixXd& M) { return M.cwiseAbs().colwise().sum().maxCoeff()
 
 TEST(HillModel, ContinuousAMatchesScalarCwEquations) {
   for (double w : {kOmega0, 1.1e-3, 0.0, -3e-4}) {
-    const MatrixXd A1 = hinf::synth::hill_continuous_A(w);
+    const MatrixXd A1 = hinf::models::hill::continuous_A(w);
     const MatrixXd expected = cw_closed_loop(w, 1.0, MatrixXd::Zero(3, 6));
     EXPECT_EQ((A1 - expected).cwiseAbs().maxCoeff(), 0.0) << "omega = " << w;
   }
   // A few entries written out: A₁(4,1) = 3ω², A₁(4,5) = 2ω, A₁(5,4) = −2ω, A₁(6,3) = −ω².
   const double w = 2e-3;
-  const MatrixXd A1 = hinf::synth::hill_continuous_A(w);
+  const MatrixXd A1 = hinf::models::hill::continuous_A(w);
   EXPECT_DOUBLE_EQ(A1(3, 0), 1.2e-5);
   EXPECT_DOUBLE_EQ(A1(3, 4), 4e-3);
   EXPECT_DOUBLE_EQ(A1(4, 3), -4e-3);
@@ -81,7 +81,7 @@ TEST(HillModel, ContinuousAMatchesScalarCwEquations) {
 }
 
 TEST(HillModel, InputMatrixIsZeroOverIdentityOverMass) {
-  const MatrixXd G0 = hinf::synth::hill_input_matrix(250.0);
+  const MatrixXd G0 = hinf::models::hill::input_matrix(250.0);
   ASSERT_EQ(G0.rows(), 6);
   ASSERT_EQ(G0.cols(), 3);
   EXPECT_EQ(G0.topRows(3).cwiseAbs().maxCoeff(), 0.0);
@@ -89,7 +89,7 @@ TEST(HillModel, InputMatrixIsZeroOverIdentityOverMass) {
 }
 
 TEST(HillModel, EulerDiscreteAIsIdentityPlusTTimesClosedLoop) {
-  const auto plant = hinf::synth::build_hill_plant(paper_model(0.05, HillModel::Discretisation::Euler));
+  const auto plant = hinf::synth::build_hill_plant(paper_model(0.05, hinf::models::Discretisation::Euler));
   const MatrixXd expected = MatrixXd::Identity(6, 6) + kT * cw_closed_loop(kOmega0, kMass, paper_K());
   EXPECT_LE((plant.A - expected).cwiseAbs().maxCoeff(), 4.5e-16);  // a few ulps of 1
   // Entries by hand: A(1,4) = T; A(4,4) = 1 + T K(1,4)/m; A(4,5) = T(2ω₀ + K(1,5)/m).
@@ -107,7 +107,7 @@ TEST(HillModel, EulerDiscreteAIsIdentityPlusTTimesClosedLoop) {
 
 TEST(HillModel, UncertaintyFactorsAreTheSpecsHaAndEa) {
   const double dbar = 0.05;
-  const auto plant = hinf::synth::build_hill_plant(paper_model(dbar, HillModel::Discretisation::Euler));
+  const auto plant = hinf::synth::build_hill_plant(paper_model(dbar, hinf::models::Discretisation::Euler));
   MatrixXd Ha = MatrixXd::Zero(6, 6);
   Ha(3, 0) = 3 * kOmega0;
   Ha(3, 4) = 2;
@@ -115,7 +115,7 @@ TEST(HillModel, UncertaintyFactorsAreTheSpecsHaAndEa) {
   Ha(5, 2) = -kOmega0;
   VectorXd ea(6);
   const double q = kOmega0 * (2 * dbar + dbar * dbar);
-  ea << q, 0, q, kOmega0 * dbar, kOmega0 * dbar, 0;  // E_a(4,4) = ω₀δ̄ (SPEC correction)
+  ea << q, 0, q, kOmega0 * dbar, kOmega0 * dbar, 0;  // E_a(4,4) = ω₀δ̄ (docs/maths.md §16, item 3)
   EXPECT_LE((plant.H - kT * Ha).cwiseAbs().maxCoeff(), 1e-18);
   EXPECT_LE((plant.E - MatrixXd(ea.asDiagonal())).cwiseAbs().maxCoeff(), 1e-20);
   EXPECT_EQ(plant.j(), 6);
@@ -125,7 +125,7 @@ TEST(HillModel, UncertaintyFactorsAreTheSpecsHaAndEa) {
 // ΔA = T(A₁(ω₀(1+δ)) − A₁(ω₀)) = H F(δ) E exactly (euler), for δ in [−δ̄, δ̄] incl. ±δ̄.
 TEST(HillModel, EulerUncertaintyIsExactForAdmissibleDelta) {
   for (double dbar : {0.05, 1.0, 2.5}) {
-    const HillModel model = paper_model(dbar, HillModel::Discretisation::Euler);
+    const HillPlantSpec model = paper_model(dbar, hinf::models::Discretisation::Euler);
     const auto plant = hinf::synth::build_hill_plant(model);
     for (double frac : {-1.0, -0.7, -0.5, -0.1, 0.0, 1e-3, 0.3, 0.9, 1.0}) {
       const double delta = frac * dbar;
@@ -169,7 +169,7 @@ TEST(HillModel, FIsNormOneAtTheVerticesAndRefusedOutside) {
 }
 
 TEST(HillModel, ZeroDeltaBarMeansNoUncertainty) {
-  const auto plant = hinf::synth::build_hill_plant(paper_model(0.0, HillModel::Discretisation::Euler));
+  const auto plant = hinf::synth::build_hill_plant(paper_model(0.0, hinf::models::Discretisation::Euler));
   EXPECT_FALSE(plant.uncertain());
   EXPECT_EQ(plant.H.rows(), 6);
   EXPECT_EQ(plant.H.cols(), 0);
@@ -181,8 +181,8 @@ TEST(HillModel, ZeroDeltaBarMeansNoUncertainty) {
 // Γ = ∫₀ᵀ e^{A_c s} ds = T I + T² A_c/2 + R', ‖R'‖ ≤ T³‖A_c‖²/6 · e^{T‖A_c‖}.
 TEST(HillModel, ZohAgreesWithTaylorSeriesAndWithEulerToSecondOrder) {
   for (double T : {0.1, 0.01, 1.0}) {
-    HillModel ze = paper_model(0.05, HillModel::Discretisation::Zoh);
-    HillModel eu = paper_model(0.05, HillModel::Discretisation::Euler);
+    HillPlantSpec ze = paper_model(0.05, hinf::models::Discretisation::ZeroOrderHold);
+    HillPlantSpec eu = paper_model(0.05, hinf::models::Discretisation::Euler);
     ze.sample_time = eu.sample_time = T;
     const auto pz = hinf::synth::build_hill_plant(ze);
     const auto pe = hinf::synth::build_hill_plant(eu);
@@ -194,7 +194,7 @@ TEST(HillModel, ZohAgreesWithTaylorSeriesAndWithEulerToSecondOrder) {
               std::pow(T * a, 3) / 6 * std::exp(T * a) + rounding) << "T = " << T;
     // zoh − euler = T²A_c²/2 + O(T³): second order in T
     EXPECT_LE(norm1(pz.A - pe.A), T * T / 2 * a * a + std::pow(T * a, 3) / 6 * std::exp(T * a) + rounding);
-    const MatrixXd Ha = hinf::synth::hill_uncertainty_H_a(kOmega0);
+    const MatrixXd Ha = hinf::models::hill::uncertainty_H_a(kOmega0);
     const MatrixXd Gamma_series_H = (T * I + T * T / 2 * Ac) * Ha;
     EXPECT_LE(norm1(pz.H - Gamma_series_H),
               std::pow(T, 3) * a * a / 6 * std::exp(T * a) * norm1(Ha) + rounding) << "T = " << T;
@@ -206,15 +206,15 @@ TEST(HillModel, ZohAgreesWithTaylorSeriesAndWithEulerToSecondOrder) {
 // exact exp(T(A_c + ΔA₁)) obeys ‖R‖ ≤ e^{2aT} a d T²/2 + (T d)²/2 e^{T(a+d)}, a = ‖A_c‖, d = ‖ΔA₁‖.
 TEST(HillModel, ZohUncertaintyModelIsFirstOrderAccurate) {
   for (double dbar : {0.05, 1.0}) {
-    const HillModel model = paper_model(dbar, HillModel::Discretisation::Zoh);
+    const HillPlantSpec model = paper_model(dbar, hinf::models::Discretisation::ZeroOrderHold);
     const auto plant = hinf::synth::build_hill_plant(model);
     const MatrixXd Ac = cw_closed_loop(kOmega0, kMass, paper_K());
     const double a = norm1(Ac);
     for (double frac : {-1.0, -0.5, 0.5, 1.0}) {
       const double delta = frac * dbar;
       const MatrixXd exact = hinf::synth::hill_exact_discrete_A(model, delta);
-      const MatrixXd dA1 = hinf::synth::hill_continuous_A(kOmega0 * (1 + delta)) -
-                           hinf::synth::hill_continuous_A(kOmega0);
+      const MatrixXd dA1 = hinf::models::hill::continuous_A(kOmega0 * (1 + delta)) -
+                           hinf::models::hill::continuous_A(kOmega0);
       const double d = norm1(dA1);
       const MatrixXd model_A = plant.A + plant.H * hinf::synth::hill_uncertainty_F(delta, dbar) * plant.E;
       const double bound = std::exp(2 * a * kT) * a * d * kT * kT / 2 +
@@ -228,26 +228,26 @@ TEST(HillModel, ZohUncertaintyModelIsFirstOrderAccurate) {
 
 TEST(HillModel, AbsurdPhysicalValuesAreRefusedNamingKeyAndValue) {
   struct Case {
-    void (*mutate)(HillModel&);
+    void (*mutate)(HillPlantSpec&);
     const char* fragment;
   };
   const Case cases[] = {
-      {[](HillModel& m) { m.chaser_mass = -5; }, "hill.chaser_mass = -5"},
-      {[](HillModel& m) { m.chaser_mass = 0; }, "hill.chaser_mass = 0"},
-      {[](HillModel& m) { m.sample_time = 0; }, "hill.sample_time = 0"},
-      {[](HillModel& m) { m.orbital_rate = -1e-4; }, "hill.orbital_rate = -0.0001"},
-      {[](HillModel& m) { m.orbital_rate = INFINITY; }, "hill.orbital_rate = inf"},
-      {[](HillModel& m) { m.delta_bar = 10; }, "hill.delta_bar = 10"},
-      {[](HillModel& m) { m.delta_bar = -0.1; }, "hill.delta_bar = -0.1"},
-      {[](HillModel& m) { m.delta_bar = NAN; }, "hill.delta_bar = nan"},
-      {[](HillModel& m) { m.K = MatrixXd::Zero(3, 5); }, "hill.K: expected 3x6"},
-      {[](HillModel& m) { m.B = MatrixXd::Zero(5, 5); }, "hill.B: expected 6 rows"},
-      {[](HillModel& m) { m.D = MatrixXd::Zero(2, 2); }, "hill.D: expected 3 rows (m from hill.C)"},
-      {[](HillModel& m) { m.L = MatrixXd::Zero(6, 5); }, "hill.L: expected 6 columns"},
-      {[](HillModel& m) { m.K(1, 2) = NAN; }, "hill.K: entry (2, 3) = nan"},
+      {[](HillPlantSpec& m) { m.chaser_mass = -5; }, "hill.chaser_mass = -5"},
+      {[](HillPlantSpec& m) { m.chaser_mass = 0; }, "hill.chaser_mass = 0"},
+      {[](HillPlantSpec& m) { m.sample_time = 0; }, "hill.sample_time = 0"},
+      {[](HillPlantSpec& m) { m.orbital_rate = -1e-4; }, "hill.orbital_rate = -0.0001"},
+      {[](HillPlantSpec& m) { m.orbital_rate = INFINITY; }, "hill.orbital_rate = inf"},
+      {[](HillPlantSpec& m) { m.delta_bar = 10; }, "hill.delta_bar = 10"},
+      {[](HillPlantSpec& m) { m.delta_bar = -0.1; }, "hill.delta_bar = -0.1"},
+      {[](HillPlantSpec& m) { m.delta_bar = NAN; }, "hill.delta_bar = nan"},
+      {[](HillPlantSpec& m) { m.K = MatrixXd::Zero(3, 5); }, "hill.K: expected 3x6"},
+      {[](HillPlantSpec& m) { m.B = MatrixXd::Zero(5, 5); }, "hill.B: expected 6 rows"},
+      {[](HillPlantSpec& m) { m.D = MatrixXd::Zero(2, 2); }, "hill.D: expected 3 rows (m from hill.C)"},
+      {[](HillPlantSpec& m) { m.L = MatrixXd::Zero(6, 5); }, "hill.L: expected 6 columns"},
+      {[](HillPlantSpec& m) { m.K(1, 2) = NAN; }, "hill.K: entry (2, 3) = nan"},
   };
   for (const Case& c : cases) {
-    HillModel m = paper_model(0.05, HillModel::Discretisation::Euler);
+    HillPlantSpec m = paper_model(0.05, hinf::models::Discretisation::Euler);
     c.mutate(m);
     try {
       hinf::synth::build_hill_plant(m);
@@ -260,7 +260,7 @@ TEST(HillModel, AbsurdPhysicalValuesAreRefusedNamingKeyAndValue) {
   }
 }
 
-// Both paper configs load with the dimensions of SPEC §3 and a Schur-stable nominal A.
+// Both paper configs load with the dimensions of docs/maths.md §9.8 and a Schur-stable nominal A.
 TEST(HillModel, PaperConfigsLoadWithPaperDimensions) {
   for (const char* name : {"paper-dbar0.05.yaml", "paper-dbar1.yaml"}) {
     const std::string path = std::string(HINF_SOURCE_DIR) + "/configs/" + name;
@@ -275,10 +275,10 @@ TEST(HillModel, PaperConfigsLoadWithPaperDimensions) {
     EXPECT_EQ(P.k(), 6);
     ASSERT_TRUE(cfg.hill.has_value());
     EXPECT_EQ(cfg.hill->K, paper_K()) << "K in " << name << " differs from SPEC §3";
-    EXPECT_EQ(cfg.hill->discretisation, HillModel::Discretisation::Euler);
+    EXPECT_EQ(cfg.hill->discretisation, hinf::models::Discretisation::Euler);
     const double dbar = std::string(name) == "paper-dbar1.yaml" ? 1.0 : 0.05;
     EXPECT_EQ(cfg.hill->delta_bar, dbar);
-    const auto reference = hinf::synth::build_hill_plant(paper_model(dbar, HillModel::Discretisation::Euler));
+    const auto reference = hinf::synth::build_hill_plant(paper_model(dbar, hinf::models::Discretisation::Euler));
     EXPECT_EQ(P.A, reference.A);
     EXPECT_EQ(P.B, reference.B);
     EXPECT_EQ(P.C, reference.C);

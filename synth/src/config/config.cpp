@@ -1,9 +1,7 @@
 // parse_config: the top level of a config (docs/file-formats.md, "Config").
-#include <vector>
-
 #include "hinf/synth/validate_plant.hpp"
 #include "config/sections.hpp"
-#include "hinf/common/sha256.hpp"
+#include "config/sha256.hpp"
 #include "hinf/common/yaml_reader.hpp"
 #include "hinf/synth/config.hpp"
 #include "hinf/common/error.hpp"
@@ -52,23 +50,8 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
   config.sha256 = sha256_hex(yaml_text);
   const YamlReader reader(source_name);
 
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(yaml_text);
-  } catch (const YAML::ParserException& e) {  // includes DeepRecursion
-    throw Error(ErrorCode::InvalidInput, source_name + ":" + std::to_string(e.mark.line + 1) +
-                                             ":" + std::to_string(e.mark.column + 1) +
-                                             ": YAML syntax error: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());
-  }
-  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull()))
-    throw Error(ErrorCode::InvalidInput,
-                source_name + ": empty config; expected a map with 'system' or 'hill'");
-  if (documents.size() > 1)
-    reader.fail(documents[1], "the file holds " + std::to_string(documents.size()) +
-                                  " YAML documents; a config is exactly one");
-  const YAML::Node root = documents[0];
+  const YAML::Node root =
+      reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
   reader.check_map(root, "", {"system", "uncertainty", "hill", "solver"});
 
   const YAML::Node system = root["system"];
@@ -87,7 +70,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
       config.plant = read_system_section(reader, system, uncertainty);
       located(reader, root, [&] { validate_plant(config.plant); });
     } else {
-      HillModel model = read_hill_section(reader, hill);
+      HillPlantSpec model = read_hill_section(reader, hill);
       located(reader, root, [&] { config.plant = build_hill_plant(model); });
       config.hill = std::move(model);
     }

@@ -1,7 +1,6 @@
-// `hill:`, the physical Hill/CW model of SPEC §3 (units: rad/s, s, kg).
+// `hill:`, the physical Hill/CW model of docs/maths.md §9 (units: rad/s, s, kg).
 #include <cmath>
 
-#include "hinf/common/suggest.hpp"
 #include "config/sections.hpp"
 #include "hinf/common/number_text.hpp"
 
@@ -12,7 +11,7 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 }  // namespace
 
-HillModel read_hill_section(const YamlReader& reader, const YAML::Node& hill) {
+HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill) {
   reader.check_map(hill, "hill",
                    {"orbital_rate", "orbital_period", "chaser_mass", "K", "sample_time",
                     "delta_bar", "discretisation", "B", "D", "C", "L"});
@@ -22,7 +21,7 @@ HillModel read_hill_section(const YamlReader& reader, const YAML::Node& hill) {
     return node;
   };
 
-  HillModel model;
+  HillPlantSpec model;
   const YAML::Node rate = hill["orbital_rate"];
   const YAML::Node period = hill["orbital_period"];
   if (rate && period)
@@ -43,19 +42,10 @@ HillModel read_hill_section(const YamlReader& reader, const YAML::Node& hill) {
   model.sample_time = reader.number(required("sample_time", "s"), "hill.sample_time");
   model.delta_bar = reader.number(required("delta_bar", "|delta| <= delta_bar"), "hill.delta_bar");
 
-  if (const YAML::Node d = hill["discretisation"]) {
-    const std::string s = reader.word(d, "hill.discretisation");
-    if (s == "euler") {
-      model.discretisation = HillModel::Discretisation::Euler;
-    } else if (s == "zoh") {
-      model.discretisation = HillModel::Discretisation::Zoh;
-    } else {
-      std::string message = "hill.discretisation = '" + s + "': must be 'euler' or 'zoh'";
-      if (const auto guess = closest_match(s, {"euler", "zoh"}))
-        message += " (did you mean '" + *guess + "'?)";
-      reader.fail(d, message);
-    }
-  }
+  if (const YAML::Node d = hill["discretisation"])
+    model.discretisation = reader.choice(d, "hill.discretisation", {"euler", "zoh"}) == "euler"
+                               ? hinf::models::Discretisation::Euler
+                               : hinf::models::Discretisation::ZeroOrderHold;
 
   if (const YAML::Node K = hill["K"]) model.K = reader.matrix(K, "hill.K");
   model.B = reader.matrix(required("B", "6 x p process-noise input"), "hill.B");

@@ -3,7 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "hinf/common/yaml_reader.hpp"
-#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/settings.hpp"
 
@@ -15,7 +15,7 @@ Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty);
 
 // `hill:`; values and shapes are checked by validate_hill_model (the caller).
-HillModel read_hill_section(const YamlReader& reader, const YAML::Node& hill);
+HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill);
 
 // `solver:`; one key per field of Settings; ranges are checked by Settings::validate.
 Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver);

@@ -1,4 +1,5 @@
-// `system:` + `uncertainty:` (SPEC §1: x(k+1) = (A + H F E) x + B w, y = C x + D v, z = L x).
+// `system:` + `uncertainty:` (docs/maths.md (1)–(4): x(k+1) = (A + H F E) x + B w,
+// y = C x + D v, z = L x).
 #include "config/sections.hpp"
 
 namespace hinf::synth {

@@ -1,6 +1,6 @@
-// Dense, direct assembly of LMI (20) of SPEC §2 in the user's units, written
+// Dense, direct assembly of LMI (18) of docs/maths.md in the user's units, written
 // independently of the generic LMI layer the solver uses, so that the certificate
-// does not trust the solver's own data structures (SPEC §2: independent checks).
+// does not trust the solver's own data structures (docs/maths.md §7: independent checks).
 #pragma once
 #include <Eigen/Dense>
 
@@ -14,7 +14,7 @@ struct Theorem1Point {
   double g = 0;       // γ²
 };
 
-// LMI (20) of SPEC §2 at a point (blocks n, n, n, n, p, q, l[, j]).
+// LMI (18) of docs/maths.md at a point (blocks n, n, n, n, p, q, l[, j]).
 Eigen::MatrixXd theorem1_matrix(const hinf::Plant& plant, const Theorem1Point& x);
 
 struct DefinitenessCheck {

@@ -1,4 +1,4 @@
-// The filtering-error system of SPEC §1 (seed 000, eqs. 13–15): with ξ = [x; x_F],
+// The filtering-error system of docs/maths.md (9)–(11): with ξ = [x; x_F],
 // τ = [w; v], e = z − z_F and a fixed admissible F (ΔA = H F E),
 //     Ā = [A + H F E, 0; B_F C, A_F],  B̄ = [B, 0; 0, B_F D],  C̄ = [L, −C_F],  D̄ = 0.
 #pragma once

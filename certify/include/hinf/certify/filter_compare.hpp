@@ -1,4 +1,4 @@
-// Comparison of two filters as transfer functions from y to z_F (USER-PAIN #14): the
+// Comparison of two filters as transfer functions from y to z_F (docs/maths.md (61), [D14]): the
 // result does not depend on the realization (similarity, state order, signs of states).
 // For Filter f, T_f(z) = C_F (zI − A_F)⁻¹ B_F; the difference T_a − T_b is realized by
 //   ([A_a 0; 0 A_b], [B_a; B_b], [C_a, −C_b], 0)

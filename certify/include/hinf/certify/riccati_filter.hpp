@@ -6,7 +6,7 @@
 // and smoothing in an H∞ setting", IEEE TAC 36(2), 1991.
 //
 // Plant (nominal, H and E ignored):  x(k+1) = A x + B w,  y = C x + D v,  z = L x.
-// Estimate of z(k) from y(0..k−1) (SPEC §1: z_F(k) = C_F x_F(k)). Cost: the ℓ₂ gain
+// Estimate of z(k) from y(0..k−1) (docs/maths.md (6): z_F(k) = C_F x_F(k)). Cost: the ℓ₂ gain
 // from τ = [w; v] to e = z − ẑ, zero initial state (the H∞ norm of the error system).
 // Assumptions: A Schur stable, R = D Dᵀ > 0 (D of full row rank; then
 // min{‖v‖ : D v = r} = ‖r‖_{R⁻¹}, so only R matters).

@@ -1,7 +1,7 @@
-// SPEC §2 check 4 without an SDP solver: the robust analysis LMI of Lemma 1 (eq. 17)
-// with the S-procedure, for a fixed filter, decided by the bounded-real lemma.
+// Check 4 (docs/maths.md §7.4) without an SDP solver: the robust analysis LMI (50), i.e.
+// Lemma 1 with the S-procedure, for a fixed filter, decided by the bounded-real lemma.
 //
-// With Ā, B̄, C̄ the nominal error system (SPEC eqs. 13–15), H̄ = [H; 0], Ē = [E, 0] and
+// With Ā, B̄, C̄ the nominal error system (docs/maths.md (9)–(11)), H̄ = [H; 0], Ē = [E, 0] and
 // multiplier λ > 0, the analysis LMI
 //     [ −P  PĀ            PB̄    0    PH̄  ]
 //     [  ∗  −P + λĒᵀĒ      0    C̄ᵀ   0   ]
@@ -37,7 +37,7 @@ struct ScaledBoundedRealTest {
   int norm_evaluations = 0;  // H∞ norms computed
 };
 
-// The test for one filter: holds the nominal error system (SPEC eqs. 13–15, which must
+// The test for one filter: holds the nominal error system (docs/maths.md (9)–(11), which must
 // be Schur stable, check 2 — Error(Infeasible) otherwise) and the scaled system's
 // matrices, so that the many norms of a search share one set-up. Keeps a reference
 // to `plant`.

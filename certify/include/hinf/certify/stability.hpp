@@ -1,5 +1,6 @@
 // Schur stability of a matrix and sampled robust stability of the error system of
-// SPEC §1 over admissible uncertainties F (FᵀF ≤ I), certificate check 2 of SPEC §2.
+// docs/maths.md (11) over admissible uncertainties F (FᵀF ≤ I), certificate check 2
+// (docs/maths.md (47)).
 // Sampling is evidence, not proof: the robust guarantee is the analysis LMI (check 4).
 #pragma once
 #include <Eigen/Dense>

@@ -36,7 +36,7 @@ struct GeneratedFiles {
 // symbol/file prefix (not a C identifier, C/C++ keyword, reserved name, too long).
 void validate_codegen_prefix(const std::string& prefix);
 
-// Generates the four files for `gains` (SPEC eq. 12). Throws Error(InvalidInput)
+// Generates the four files for `gains` (docs/maths.md (5)-(6)). Throws Error(InvalidInput)
 // for a bad prefix or options, or coefficients that do not fit the real type, and
 // Error(NumericalFailure) if the test vectors overflow (a violently unstable filter).
 GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOptions& options);

@@ -7,4 +7,7 @@ namespace hinf {
 
 std::string number_text(double value);
 
+// `digits` significant digits (printf's %g), for tables and summaries read by people.
+std::string significant_text(double value, int digits);
+
 }  // namespace hinf

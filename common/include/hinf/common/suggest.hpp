@@ -1,4 +1,4 @@
-// "Did you mean ...?" suggestions for unknown keys and values (USER-PAIN #4).
+// "Did you mean ...?" suggestions for unknown keys and values (docs/maths.md [D4]).
 #pragma once
 #include <optional>
 #include <string>

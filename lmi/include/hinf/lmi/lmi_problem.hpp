@@ -1,7 +1,7 @@
 // A small generic LMI layer: decision variables (symmetric, full, scalar), affine
 // block terms  left · X · right  placed in a block-partitioned symmetric matrix
 //   M(x) = M₀ + Σᵢ xᵢ Mᵢ,
-// and the derivatives of the log-det barrier φ(x) = −log det(−M(x)) (SPEC §2, solver notes):
+// and the derivatives of the log-det barrier φ(x) = −log det(−M(x)) (docs/maths.md §5.2):
 //   ∂φ/∂xᵢ = tr(W Mᵢ),   ∂²φ/∂xᵢ∂xⱼ = tr(W Mᵢ W Mⱼ),   W = (−M)⁻¹.
 // The Mᵢ are never formed: each term is kept as its factors (left, X, right), so a
 // Hessian block between two terms is a permuted Kronecker product of two small dense

@@ -1,4 +1,4 @@
-// Relative position measured directly (SPEC §3, C = [I3 0_3]):  y = C x, x = [r; v].
+// Relative position measured directly (docs/maths.md §10 and §9.8, C = [I3 0_3]):  y = C x, x = [r; v].
 #pragma once
 
 #include <Eigen/Dense>

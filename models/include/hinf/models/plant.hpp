@@ -1,4 +1,4 @@
-// The uncertain discrete-time plant of SPEC §1:
+// The uncertain discrete-time plant of docs/maths.md (1)–(4):
 //   x(k+1) = (A + H F(k) E) x(k) + B w(k),  y(k) = C x(k) + D v(k),  z(k) = L x(k),
 //   F(k)ᵀF(k) ≤ I.
 #pragma once
@@ -26,7 +26,7 @@ struct Plant {
   bool uncertain() const { return H.size() > 0 && E.size() > 0; }
 };
 
-// The fixed-gain full-order filter of SPEC eq. (12).
+// The fixed-gain full-order filter of docs/maths.md (5)–(6).
 struct Filter {
   Eigen::MatrixXd A_F;  // n×n
   Eigen::MatrixXd B_F;  // n×m

@@ -1,4 +1,4 @@
-// Range, azimuth, elevation of the target (SPEC §3, seed 000 eq. 7).
+// Range, azimuth, elevation of the target (docs/maths.md §10; the paper's eq. 7).
 //
 // State x = [r; v], r the relative position in the reference (Hill) frame. With C_bl the
 // frame-to-body rotation (default identity), the body-frame position is p = C_bl r and

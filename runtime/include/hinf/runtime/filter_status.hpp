@@ -1,4 +1,4 @@
-// Status reporting and the covariance policy shared by Ekf and Rekf (USER-PAIN #15).
+// Status reporting and the covariance policy shared by Ekf and Rekf (docs/maths.md [D15]).
 //
 // Every predict()/update() returns a FilterStatus; nothing aborts, nothing is hidden.
 //
@@ -15,7 +15,7 @@
 //    CovarianceNotPD returned; with CovariancePolicy::ResetToP0, P is replaced by the P0
 //    given to init() (x is kept) and CovarianceReset returned.
 //  * GammaConditionViolated (Rekf only): gamma^2 I - L P L^T is not positive definite,
-//    so M(P) does not exist (SPEC §4). The step is skipped; x and P unchanged; the
+//    so M(P) does not exist (docs/maths.md (99)). The step is skipped; x and P unchanged; the
 //    smallest eigenvalue of gamma^2 I - L P L^T is available from the filter.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The synthesised robust H-infinity filter as a discrete LTI system, SPEC §1 eq. (12):
+// The synthesised robust H-infinity filter as a discrete LTI system, docs/maths.md (5)–(6):
 //
 //     z_F(k)   = C_F x_F(k)
 //     x_F(k+1) = A_F x_F(k) + B_F y(k)
@@ -185,7 +185,8 @@ class LtiFilter {
     x_F_ = x_F;
   }
 
-  // One step of eq. (12): returns z_F(k) = C_F x_F(k), then x_F(k+1) = A_F x_F(k) + B_F y(k).
+  // One step of docs/maths.md (5)–(6): returns z_F(k) = C_F x_F(k), then
+  // x_F(k+1) = A_F x_F(k) + B_F y(k).
   // The returned reference stays valid until the next call. No heap allocation.
   // Throws std::invalid_argument only if y has the wrong size.
   const Vector& step(const Eigen::Ref<const Vector>& y) {
@@ -263,7 +264,7 @@ class FixedLtiFilter {
   void init(const Output& z0) { x_F_.noalias() = C_F_pinv_ * z0; }
   void set_state(const State& x_F) { x_F_ = x_F; }
 
-  // One step of eq. (12): returns z_F(k), then advances x_F. No heap allocation.
+  // One step of docs/maths.md (5)–(6): returns z_F(k), then advances x_F. No heap allocation.
   const Output& step(const Measurement& y) {
     z_F_.noalias() = C_F_ * x_F_;
     State x_next;

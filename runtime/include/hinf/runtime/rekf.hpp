@@ -1,18 +1,19 @@
-// Robust extended Kalman filter, SPEC §4 (seed 003: Xiong, Wei, Liu, IEEE T-SMC-A 40(2),
-// 2010), in the consistent form fixed by the SPEC. Linearisation errors are norm-bounded
-// uncertainties: process A_k beta L, measurement C_k alpha L, with scalar gamma > 0:
+// Robust extended Kalman filter, docs/maths.md §13 (Xiong, Wei, Liu, IEEE T-SMC-A 40(2),
+// 2010), in the consistent form docs/maths.md (95)–(99) (see §16, item 7). Linearisation
+// errors are norm-bounded uncertainties: process A_k beta L, measurement C_k alpha L, with
+// scalar gamma > 0 (docs/maths.md (94)):
 //
-//     M(P)      = (P^-1 - gamma^-2 L^T L)^-1
-//     P(k|k-1)  = F_k M(P(k-1)) F_k^T + gamma^2 A_k A_k^T + Q_k                         (14)
-//     K_k       = M(P(k|k-1)) H_k^T [H_k M(P(k|k-1)) H_k^T + gamma^2 C_k C_k^T + R_k]^-1  (16)
-//     P(k)      = (I - K_k H_k) M(P(k|k-1)) (I - K_k H_k)^T + K_k (gamma^2 C_k C_k^T + R_k) K_k^T  (15)
+//     M(P)      = (P^-1 - gamma^-2 L^T L)^-1                                            (95)
+//     P(k|k-1)  = F_k M(P(k-1)) F_k^T + gamma^2 A_k A_k^T + Q_k                         (96)
+//     K_k       = M(P(k|k-1)) H_k^T [H_k M(P(k|k-1)) H_k^T + gamma^2 C_k C_k^T + R_k]^-1  (97)
+//     P(k)      = (I - K_k H_k) M(P(k|k-1)) (I - K_k H_k)^T + K_k (gamma^2 C_k C_k^T + R_k) K_k^T  (98)
 //     x(k|k-1)  = f(x(k-1), u),   x(k) = x(k|k-1) + K_k residual(y, h(x(k|k-1)))
 //
 // How M(P) is computed: by the matrix inversion lemma,
 //     M(P) = P + P L^T (gamma^2 I - L P L^T)^-1 L P,
 // with gamma^2 I - L P L^T factored by Cholesky (LLT) and the inverse applied by solves.
-// Why: (i) the factorisation IS the existence condition gamma^2 I - L P L^T > 0 of SPEC §4,
-// checked at every evaluation (in predict on P(k-1), in update on P(k|k-1)); (ii) P is
+// Why: (i) the factorisation IS the existence condition gamma^2 I - L P L^T > 0, docs/maths.md
+// (99), checked at every evaluation (in predict on P(k-1), in update on P(k|k-1)); (ii) P is
 // never inverted, so an ill-conditioned P costs no accuracy; (iii) with L = 0 the
 // correction term is exactly zero, so A_k = 0, C_k = 0, L = 0 gives exactly the EKF with
 // the Joseph update (the update itself is shared with Ekf: detail/joseph_update.hpp).
@@ -32,27 +33,25 @@
 #include <stdexcept>
 #include <string>
 
-#include "hinf/runtime/detail/covariance.hpp"
-#include "hinf/runtime/detail/joseph_update.hpp"
+#include "hinf/runtime/detail/kalman_core.hpp"
 #include "hinf/runtime/filter_status.hpp"
 
 namespace hinf::runtime {
 
 template <class Model, class Measurement, int NL = Model::NX>
-class Rekf {
- public:
-  static constexpr int NX = Model::NX;
-  static constexpr int NU = Model::NU;
-  static constexpr int NZ = Measurement::NZ;
-  static_assert(NX > 0 && NU > 0 && NZ > 0 && NL > 0, "Rekf: dimensions must be positive");
-  static_assert(Measurement::NX == Model::NX, "Rekf: model and measurement state dimensions differ");
+class Rekf : public detail::KalmanCore<Model, Measurement> {
+  using Core = detail::KalmanCore<Model, Measurement>;
 
-  using State = Eigen::Matrix<double, NX, 1>;
-  using Input = Eigen::Matrix<double, NU, 1>;
-  using Observation = Eigen::Matrix<double, NZ, 1>;
-  using StateCov = Eigen::Matrix<double, NX, NX>;
-  using ObsCov = Eigen::Matrix<double, NZ, NZ>;
-  using Gain = Eigen::Matrix<double, NX, NZ>;
+ public:
+  static constexpr int NX = Core::NX;
+  static constexpr int NZ = Core::NZ;
+  static_assert(NL > 0, "Rekf: dimensions must be positive");
+  using typename Core::Input;
+  using typename Core::MeasurementJacobian;
+  using typename Core::ObsCov;
+  using typename Core::Observation;
+  using typename Core::State;
+  using typename Core::StateCov;
   using ProcessUncertainty = Eigen::Matrix<double, NX, NX>;      // A_k
   using MeasurementUncertainty = Eigen::Matrix<double, NZ, NZ>;  // C_k
   using UncertaintyOutput = Eigen::Matrix<double, NL, NX>;       // L
@@ -60,56 +59,31 @@ class Rekf {
   // Q PSD, R PD, gamma > 0, A_k, C_k, L finite; throws std::invalid_argument otherwise.
   Rekf(const Model& model, const Measurement& measurement, const StateCov& Q, const ObsCov& R, double gamma,
        const ProcessUncertainty& A_k, const MeasurementUncertainty& C_k, const UncertaintyOutput& L)
-      : model_(model), meas_(measurement) {
-    set_Q(Q);
-    set_R(R);
+      : Core(model, measurement, Q, R, "Rekf") {
     set_gamma(gamma);
     set_uncertainty(A_k, C_k, L);
-    x_.setZero();
-    P_.setIdentity();
-    P0_.setIdentity();
     M_.setZero();
-    K_.setZero();
-    S_.setZero();
-    nu_.setZero();
   }
 
-  void init(const State& x0, const StateCov& P0) {
-    if (!x0.allFinite()) throw std::invalid_argument("Rekf: x0 has a non-finite entry");
-    detail::require_positive_definite(P0, "Rekf", "P0");
-    x_ = x0;
-    P0_ = 0.5 * (P0 + P0.transpose());
-    P_ = P0_;
-  }
-
-  // Eq. (14): P(k|k-1) = F M(P(k-1)) F^T + gamma^2 A_k A_k^T + Q.
+  // docs/maths.md (96): P(k|k-1) = F M(P(k-1)) F^T + gamma^2 A_k A_k^T + Q.
   RekfStatus predict(const Input& u) {
-    if (!u.allFinite()) return RekfStatus::NonFiniteInput;
-    const State x_next = model_.f(x_, u);
-    const StateCov F = model_.F(x_, u);
-    if (!x_next.allFinite() || !F.allFinite()) return RekfStatus::ModelNotFinite;
-    if (!compute_M(P_)) return RekfStatus::GammaConditionViolated;
-    const StateCov FM = F * M_;
-    P_.noalias() = FM * F.transpose();
-    P_ += gamma2_AAt_;
-    P_ += Q_;
-    detail::symmetrise(P_);
-    x_ = x_next;
-    return detail::apply_covariance_policy<NX>(P_, P0_, policy_);
+    State x_next;
+    StateCov F;
+    const RekfStatus s = this->evaluate_process(u, x_next, F);
+    if (s != RekfStatus::Ok) return s;
+    if (!compute_M(this->P_)) return RekfStatus::GammaConditionViolated;
+    return this->finish_predict(x_next, F, M_, &gamma2_AAt_);
   }
 
-  // Eqs. (16), (15) with M = M(P(k|k-1)) and R_bar = gamma^2 C_k C_k^T + R.
+  // docs/maths.md (97), (98) with M = M(P(k|k-1)) and R_bar = gamma^2 C_k C_k^T + R.
   RekfStatus update(const Observation& y) {
-    if (!y.allFinite()) return RekfStatus::NonFiniteInput;
-    const Observation y_pred = meas_.h(x_);
-    const Eigen::Matrix<double, NZ, NX> H = meas_.H(x_);
-    if (!y_pred.allFinite() || !H.allFinite()) return RekfStatus::ModelNotFinite;
-    if (!compute_M(P_)) return RekfStatus::GammaConditionViolated;
-    nu_ = meas_.residual(y, y_pred);
-    const ObsCov R_bar = gamma2_CCt_ + R_;
-    const RekfStatus s = detail::joseph_update<NX, NZ>(x_, P_, M_, H, R_bar, nu_, nis_gate_, nis_, S_, K_);
+    Observation y_pred;
+    MeasurementJacobian H;
+    const RekfStatus s = this->evaluate_measurement(y, y_pred, H);
     if (s != RekfStatus::Ok) return s;
-    return detail::apply_covariance_policy<NX>(P_, P0_, policy_);
+    if (!compute_M(this->P_)) return RekfStatus::GammaConditionViolated;
+    const ObsCov R_bar = gamma2_CCt_ + this->R_;
+    return this->finish_update(y, y_pred, H, M_, R_bar);
   }
 
   // Smallest eigenvalue of gamma^2 I - L P L^T for the given P (on demand; not per step).
@@ -121,15 +95,7 @@ class Rekf {
     return es.eigenvalues().minCoeff();
   }
 
-  // Configuration.
-  void set_Q(const StateCov& Q) {
-    detail::require_positive_semidefinite(Q, "Rekf", "Q");
-    Q_ = 0.5 * (Q + Q.transpose());
-  }
-  void set_R(const ObsCov& R) {
-    detail::require_positive_definite(R, "Rekf", "R");
-    R_ = 0.5 * (R + R.transpose());
-  }
+  // Configuration (also Core's set_Q, set_R, set_covariance_policy, set_innovation_gate, set_state).
   void set_gamma(double gamma) {
     if (!std::isfinite(gamma) || gamma <= 0.0)
       throw std::invalid_argument("Rekf: gamma must be finite and > 0; got " + std::to_string(gamma));
@@ -145,26 +111,11 @@ class Rekf {
     L_ = L;
     refresh_uncertainty_terms();
   }
-  void set_covariance_policy(CovariancePolicy p) { policy_ = p; }
-  void set_innovation_gate(double nis_threshold) { nis_gate_ = nis_threshold; }
-  void set_state(const State& x, const StateCov& P) {
-    x_ = x;
-    P_ = P;
-  }
 
-  const State& x() const { return x_; }
-  const StateCov& P() const { return P_; }
-  const StateCov& P0() const { return P0_; }
   const StateCov& M() const { return M_; }  // M(P) of the last predict/update
-  const Gain& K() const { return K_; }
-  const ObsCov& S() const { return S_; }
-  const Observation& innovation() const { return nu_; }
-  double nis() const { return nis_; }
   double gamma() const { return gamma_; }
   // Smallest eigenvalue of gamma^2 I - L P L^T at the last violation (NaN if none yet).
   double gamma_condition_min_eigenvalue() const { return gamma_min_eig_; }
-  const Model& model() const { return model_; }
-  const Measurement& measurement() const { return meas_; }
 
  private:
   void refresh_uncertainty_terms() {
@@ -191,21 +142,13 @@ class Rekf {
     return true;
   }
 
-  Model model_;
-  Measurement meas_;
-  State x_;
-  StateCov P_, P0_, Q_, M_, gamma2_AAt_;
-  ObsCov R_, S_, gamma2_CCt_;
-  Gain K_;
-  Observation nu_;
+  StateCov M_, gamma2_AAt_;
+  ObsCov gamma2_CCt_;
   ProcessUncertainty A_k_ = ProcessUncertainty::Zero();
   MeasurementUncertainty C_k_ = MeasurementUncertainty::Zero();
   UncertaintyOutput L_ = UncertaintyOutput::Zero();
   double gamma_ = 1.0;
   double gamma_min_eig_ = std::numeric_limits<double>::quiet_NaN();
-  double nis_ = 0.0;
-  double nis_gate_ = std::numeric_limits<double>::infinity();
-  CovariancePolicy policy_ = CovariancePolicy::Report;
 };
 
 }  // namespace hinf::runtime

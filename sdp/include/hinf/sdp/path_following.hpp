@@ -1,5 +1,5 @@
 // The barrier interior-point method for   minimise cᵀx  subject to  M(x) ⪯ −εI,  ‖x‖ < ρ
-// (docs/maths.md §4). Phase I finds a strictly feasible point (minimise s with
+// (docs/maths.md §5). Phase I finds a strictly feasible point (minimise s with
 // M(x) + εI ⪯ sI until s < 0); phase II follows the central path x*(t) of
 // f_t = t·cᵀx + φ(x) with t ← μ·t, a tangent predictor, and Newton centring (Ipopt, then
 // QR Newton steps at the end of the path), until the certified gap is below
@@ -46,7 +46,7 @@ struct Solution {
   int newton_total = 0, newton_phase1 = 0, centerings = 0;
   double t = 0;
   double objective = 0;          // cᵀx
-  double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (32))
+  double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (42))
   double relative_gap = 0;       // gap/|cᵀx|
   double dual_bound = 0;         // tr(W M₀)/t with the margin removed: ≈ lower bound on p*
   double elapsed_s = 0;

@@ -5,8 +5,8 @@
 //   row k:  y(k) measured → every filter's estimate of x(k) → thrust u(k) → advance(u(k))
 //
 // What "estimate of x(k)" is (docs/experiments.md, "Trajectory file"):
-//   LTI filters (hinf, published): z_F(k) = C_F x_F(k), from y(0..k−1) (SPEC §1 note: eq. 12
-//     is a one-step predictor); y(k) is consumed afterwards, x_F(k+1) = A_F x_F(k) + B_F y(k).
+//   LTI filters (hinf, published): z_F(k) = C_F x_F(k), from y(0..k−1) (docs/maths.md §2.2:
+//     the filter (5)–(6) is a one-step predictor); y(k) is consumed afterwards, x_F(k+1) = A_F x_F(k) + B_F y(k).
 //   EKF / REKF: the filtered x̂(k|k), from y(0..k); advance() predicts to k+1 with u(k).
 #pragma once
 #include <Eigen/Dense>
@@ -20,7 +20,7 @@
 namespace hinf::sim {
 
 // One sample of the sensor: the raw (ρ, α, β) and the converted Cartesian position
-// (SPEC §3 eq. 7), which is what every filter receives.
+// (docs/maths.md (82)), which is what every filter receives.
 struct MeasurementSample {
   Vector3 rae;        // ρ (m), α (rad), β (rad), noisy
   Vector3 cartesian;  // C_blᵀ (ρ cosβ cosα, ρ cosβ sinα, −ρ sinβ)
@@ -53,7 +53,7 @@ class Estimator {
   FilterHealth health_;
 };
 
-// SPEC eq. (12) with x_F(0) = C_F⁺ z0 (L = I).
+// The filter docs/maths.md (5)–(6) with x_F(0) = C_F⁺ z0, (8) (L = I).
 std::unique_ptr<Estimator> make_lti_estimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F,
                                               const Vector6& z0);
 
@@ -72,8 +72,8 @@ KalmanSettings kalman_settings_from(const Scenario& scenario, bool knows_thrust)
 
 std::unique_ptr<Estimator> make_ekf_estimator(const Scenario& scenario, const KalmanSettings& settings);
 
-// SPEC §4 REKF, same model as the EKF, told about the orbital-rate uncertainty
-// |δ| ≤ δ̄ through A_k = T·H_a, L = E_a(δ̄) (SPEC §3), C_k = 0; knows the thrust.
+// The REKF of docs/maths.md §13, same model as the EKF, told about the orbital-rate uncertainty
+// |δ| ≤ δ̄ through A_k = T·H_a, L = E_a(δ̄) (docs/maths.md (100)), C_k = 0; knows the thrust.
 std::unique_ptr<Estimator> make_rekf_estimator(const Scenario& scenario, const KalmanSettings& settings,
                                                const RekfSettings& rekf);
 

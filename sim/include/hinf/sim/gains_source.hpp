@@ -1,6 +1,6 @@
 // Obtaining an LTI filter's gains for a scenario: read a gains file
 // (hinf::runtime_yaml::load_gains_file) or synthesise them now from a synthesis config
-// (hinf::synth::load_config + synthesize, SPEC §2).
+// (hinf::synth::load_config + synthesize, docs/maths.md §3–§7).
 #pragma once
 #include <optional>
 #include <string>
@@ -18,8 +18,8 @@ struct ObtainedGains {
   std::string origin;           // "gains file PATH" or "synthesised from PATH"
 };
 
-// Errors propagate as hinf::runtime_yaml::GainsFileError (invalid file: exit 2) or
-// hinf::Error (its own code: invalid 2, infeasible 3, numerical 4).
+// Errors propagate as hinf::Error with its own code: an invalid gains file or config is
+// InvalidInput (exit 2); a synthesis may also end Infeasible (3) or NumericalFailure (4).
 ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose);
 
 }  // namespace hinf::sim

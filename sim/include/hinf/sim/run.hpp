@@ -14,7 +14,7 @@
 
 namespace hinf::sim {
 
-// Gains of an LTI filter (SPEC eq. 12), obtained once before the runs (gains_source.hpp).
+// Gains of an LTI filter (docs/maths.md (5)–(6)), obtained once before the runs (gains_source.hpp).
 struct LtiGains {
   Matrix A_F, B_F, C_F;
 };

@@ -1,5 +1,5 @@
 // A navigation experiment, as plain data (read by scenario_yaml.hpp, run by run.hpp).
-// Units: SI (m, s, rad, N, kg). Frame: SPEC §3 (x radial, y along-track, z normal).
+// Units: SI (m, s, rad, N, kg). Frame: docs/maths.md §9.1 (x radial, y along-track, z normal).
 #pragma once
 #include <Eigen/Dense>
 #include <map>
@@ -14,7 +14,7 @@ namespace hinf::sim {
 
 using Matrix = Eigen::MatrixXd;
 
-enum class ControlLaw { None, StateFeedback };       // u = 0, or u = K x̂ (SPEC §3 eq. 3)
+enum class ControlLaw { None, StateFeedback };       // u = 0, or u = K x̂ (docs/maths.md (66))
 enum class ControlInput { Truth, Estimate };         // x̂ = true state, or the `hinf` estimate
 
 // Where an LTI filter's gains come from: a gains file, or a synthesis config solved now.
@@ -24,10 +24,10 @@ struct LtiGainsSource {
 };
 
 struct RekfSettings {
-  std::optional<double> gamma;  // SPEC §4 γ; default: γ² = 2 λ_max(L P0 Lᵀ) (twice the
-                                // smallest γ that the existence condition allows at P0)
+  std::optional<double> gamma;  // γ of docs/maths.md §13; default (100): γ² = 2 λ_max(L P0 Lᵀ)
+                                // (twice the smallest γ that the existence condition allows at P0)
   double delta_bar = 0.05;  // uncertainty of the orbital rate the REKF is told about:
-                            // A_k = T·H_a, L = E_a(δ̄) (SPEC §3's structure), C_k = 0
+                            // A_k = T·H_a, L = E_a(δ̄) (docs/maths.md (100)), C_k = 0
 };
 
 struct FilterSelection {
@@ -35,7 +35,7 @@ struct FilterSelection {
   std::optional<LtiGainsSource> published;  // the paper's published gains
   bool ekf = false;                         // EKF that knows the applied thrust
   bool ekf_no_control = false;              // EKF that ignores the thrust
-  std::optional<RekfSettings> rekf;         // SPEC §4 REKF (knows the applied thrust)
+  std::optional<RekfSettings> rekf;         // REKF, docs/maths.md §13 (knows the applied thrust)
 };
 
 struct Scenario {
@@ -51,7 +51,7 @@ struct Scenario {
   // truth
   double truth_delta = 0.0;          // ω_true = ω₀(1+δ) (target radius from ω_true)
   Eigen::Matrix<double, 6, 1> initial_state;  // x(0)
-  // control (SPEC §3 K)
+  // control (K of docs/maths.md (66), (77))
   ControlLaw control_law = ControlLaw::None;
   ControlInput control_input = ControlInput::Truth;
   Matrix K;                          // 3×6
@@ -60,9 +60,9 @@ struct Scenario {
   std::vector<NoiseComponent> range_noise;    // m
   std::vector<NoiseComponent> azimuth_noise;  // rad
   std::vector<NoiseComponent> elevation_noise;// rad
-  Matrix C_bl = Matrix::Identity(3, 3);       // frame-to-body rotation (SPEC §3 eq. 7)
+  Matrix C_bl = Matrix::Identity(3, 3);       // frame-to-body rotation (docs/maths.md (81))
   // estimation
-  Eigen::Matrix<double, 6, 1> initial_estimate;  // SPEC §3 (630, 520, 1000, 0, 0, 0)
+  Eigen::Matrix<double, 6, 1> initial_estimate;  // docs/maths.md §9.8 (630, 520, 1000, 0, 0, 0)
   Eigen::Matrix<double, 6, 1> initial_sigma;     // EKF/REKF P0 = diag(σ²)
   double divergence_limit_m = 1e6;  // a position error beyond this counts as diverged
   FilterSelection filters;

@@ -1,12 +1,12 @@
 // Truth model: exact (nonlinear) two-body relative motion of the chaser about a target
-// on a circular orbit, in the target's rotating frame (SPEC §3 frame: x radial,
+// on a circular orbit, in the target's rotating frame (docs/maths.md §9.1 frame: x radial,
 // y along-track, z orbit normal). Not the Hill/CW linearisation.
 //
 //   ẍ =  2ωẏ + ω²(R+x) − μ(R+x)/r³ + a_x
 //   ÿ = −2ωẋ + ω² y    − μ y/r³     + a_y
 //   z̈ =               − μ z/r³     + a_z,       r = |(R+x, y, z)|,  ω² = μ/R³
 //
-// Linearised about the origin this is SPEC §3's Hill equation (ẍ = 3ω²x + 2ωẏ, …).
+// Linearised about the origin this is the Hill equation docs/maths.md (62) (ẍ = 3ω²x + 2ωẏ, …).
 #pragma once
 #include <Eigen/Dense>
 
@@ -15,7 +15,7 @@ namespace hinf::sim {
 using Vector3 = Eigen::Matrix<double, 3, 1>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-constexpr double kEarthMu = 3.986004418e14;  // m³/s², SPEC task statement
+constexpr double kEarthMu = 3.986004418e14;  // m³/s², docs/maths.md (86)
 
 class RelativeTwoBody {
  public:

@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/synthesis.hpp"
 
 namespace hinf::synth {
@@ -25,7 +25,7 @@ struct FilterAnalysis {
   double worst_delta = 0, worst_delta_hinf_norm = 0;
 };
 
-FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillModel>& hill,
+FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantSpec>& hill,
                               const Filter& filter, const Settings& settings, int delta_points = 41);
 
 }  // namespace hinf::synth

@@ -1,6 +1,6 @@
 // Reading a synthesis config (docs/file-formats.md, "Config"): strict YAML, either the
-// plant as matrices (`system:` + optional `uncertainty:`, SPEC §1) or the physical
-// Hill model (`hill:`, SPEC §3), plus optional `solver:` settings.
+// plant as matrices (`system:` + optional `uncertainty:`, docs/maths.md (1)–(4)) or the
+// physical Hill model (`hill:`, docs/maths.md §9), plus optional `solver:` settings.
 //
 // Every failure is Error(InvalidInput) whose message names the file, the key path and,
 // for matrices, the expected and actual dimensions. An unstable plant is NOT a config
@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/settings.hpp"
 
@@ -17,7 +17,7 @@ namespace hinf::synth {
 
 struct SynthConfig {
   Plant plant;                     // validated (validate_plant)
-  std::optional<HillModel> hill;   // set iff the config used `hill:`
+  std::optional<HillPlantSpec> hill;   // set iff the config used `hill:`
   Settings settings;               // defaults overridden by `solver:`; validated
   std::string sha256;              // SHA-256 of the config's exact bytes, lowercase hex
   std::string path;                // the path (or source name) it was read from

@@ -6,7 +6,8 @@ namespace hinf::synth {
 
 struct Settings {
   // Strictness margin of the LMI, relative to the equilibrated problem: the solver
-  // enforces −M(x) ⪰ lmi_margin·I (USER-PAIN #2, #3). Refused below 1e-14 (solver tolerance).
+  // enforces −M(x) ⪰ lmi_margin·I (docs/maths.md (26), [D2], [D3]). Refused below 1e-14
+  // (solver tolerance).
   double lmi_margin = 1e-9;
   // Stop when the barrier's duality gap (N+1)/t is below this fraction of γ².
   double relative_gap_tol = 1e-7;
@@ -20,8 +21,9 @@ struct Settings {
   int max_iterations = 600;
   // Wall-clock limit for one solve, seconds.
   double time_limit_s = 600.0;
-  // γ back-off (USER-PAIN #6): if > 0, the filter is recovered at γ_b = (1 + gamma_backoff)·γ*
-  // from the point of largest LMI margin (better-conditioned S, R − S and gains). 0 = off.
+  // γ back-off (docs/maths.md §6, [D6]): if > 0, the filter is recovered at
+  // γ_b = (1 + gamma_backoff)·γ* from the point of largest LMI margin (better-conditioned
+  // S, R − S and gains). 0 = off.
   double gamma_backoff = 0.0;
   // Number of random admissible F(k) sampled in the Schur-stability check.
   int stability_samples = 64;

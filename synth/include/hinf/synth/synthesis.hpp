@@ -1,4 +1,4 @@
-// Robust H∞ filter synthesis (SPEC §2: Theorem 1, Corollary 1, recovery eq. 21)
+// Robust H∞ filter synthesis (docs/maths.md §3: Theorem 1 (18), Corollary 1 (21), recovery (22))
 // and the independent certificate of its result.
 #pragma once
 #include <functional>
@@ -13,10 +13,10 @@
 
 namespace hinf::synth {
 
-// Results of the independent checks of SPEC §2 (none reuses the solver's numbers).
+// Results of the independent checks of docs/maths.md §7 (none reuses the solver's numbers).
 struct Certificate {
   double gamma = 0;                       // the bound being certified
-  // check 1: LMI (20) at the returned point, assembled densely, in user units
+  // check 1: LMI docs/maths.md (18) at the returned point, assembled densely, in user units
   double lmi_max_eig = 0;                 // largest eigenvalue of M(x) (must be < 0)
   double lmi_max_eig_relative = 0;        // ... divided by ‖M(x)‖₂
   bool lmi_negative_definite = false;     // Cholesky of −M(x) − margin·I succeeded
@@ -38,7 +38,7 @@ struct Certificate {
   // the smallest γ at which the analysis LMI is feasible with that λ (≤ γ; +inf if
   // infeasible at γ) — an upper bound on the robust ℓ₂ gain. `analyze` minimises over λ too.
   double robust_bound = 0;
-  // conditioning of the recovery (USER-PAIN #6)
+  // conditioning of the recovery (docs/maths.md §6, [D6])
   double cond_S = 0, cond_R_minus_S = 0;
   double norm_A_F = 0, norm_B_F = 0, norm_C_F = 0;
   bool passed = false;
@@ -85,17 +85,17 @@ using IterationObserver = std::function<void(const IterationReport&)>;
 SynthesisResult synthesize(const Plant& plant, const Settings& settings,
                            const IterationObserver& observer);
 
-// Independent checks of SPEC §2 for any filter against a plant at bound gamma.
+// Independent checks of docs/maths.md §7 for any filter against a plant at bound gamma.
 // `lmi_point` checks (check 1) are only possible for synthesised filters and are
 // skipped (left at defaults) here; checks 2–4 are computed.
 Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
                            const Settings& settings);
 
-// The Theorem-1 LMI in SDPA sparse format (min γ² s.t. (20) ≺ 0, H/E balanced, λ' = λs²),
+// The Theorem-1 LMI in SDPA sparse format (min γ² s.t. docs/maths.md (18), H/E balanced, λ' = λs²),
 // for cross-checking γ* with any SDP solver.
 std::string theorem1_sdpa(const Plant& plant, const std::string& comment);
 
-// Robust analysis (SPEC §2 check 4, Lemma 1 / eq. 17 with the S-procedure):
+// Robust analysis (docs/maths.md (50) and §7.5: Lemma 1 with the S-procedure):
 // the smallest γ for which the analysis LMI is feasible for this filter.
 double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings);
 

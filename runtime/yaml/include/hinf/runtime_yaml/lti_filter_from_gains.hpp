@@ -3,21 +3,22 @@
 #include <stdexcept>
 #include <string>
 
+#include "hinf/common/error.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 
 namespace hinf::runtime_yaml {
 
-// Builds the filter of SPEC eq. (12) from `gains`. The LtiFilter constructor's
-// checks (shapes, finiteness, Schur stability of A_F) surface as GainsFileError,
-// prefixed with `source_name` (e.g. the file path) when given.
+// Builds the filter docs/maths.md (5)-(6) from `gains`. The LtiFilter constructor's
+// checks (shapes, finiteness, Schur stability of A_F) surface as hinf::Error
+// (InvalidInput), prefixed with `source_name` (e.g. the file path) when given.
 inline runtime::LtiFilter make_lti_filter(const GainsFile& gains,
                                           const std::string& source_name = "") {
   try {
     return runtime::LtiFilter(gains.A_F, gains.B_F, gains.C_F);
   } catch (const std::invalid_argument& e) {
-    throw GainsFileError((source_name.empty() ? std::string() : source_name + ": ") +
-                         "filter: " + e.what());
+    throw Error(ErrorCode::InvalidInput,
+                (source_name.empty() ? std::string() : source_name + ": ") + "filter: " + e.what());
   }
 }
 

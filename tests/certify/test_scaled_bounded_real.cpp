@@ -1,6 +1,6 @@
-// Check 4 of SPEC §2 two independent ways: the bounded-real form with a searched
+// Check 4 (docs/maths.md §7.4) two independent ways: the bounded-real form with a searched
 // S-procedure multiplier (certify/scaled_bounded_real.hpp, H∞ norms by the symplectic
-// pencil, no SDP) against the robust analysis LMI (17) minimised by the barrier solver
+// pencil, no SDP) against the robust analysis LMI docs/maths.md (50) minimised by the barrier solver
 // (robust_bound()). The two must agree on where the LMI becomes feasible: feasible just
 // above the LMI's optimal γ, infeasible just below it.
 #include <gtest/gtest.h>

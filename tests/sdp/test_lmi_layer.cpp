@@ -3,7 +3,7 @@
 //    terms, constants) against a hand assembly written here from the term definitions;
 //  - basis matrices Mᵢ against exact differences of evaluate() (M is affine);
 //  - gradient tr(W Mᵢ) and Hessian tr(W Mᵢ W Mⱼ) against dense traces of the Mᵢ;
-//  - Theorem 1's evaluate() against the dense SPEC (20) assembly of certify/dense_lmi
+//  - Theorem 1's evaluate() against the dense docs/maths.md (18) assembly of certify/dense_lmi
 //    (congruence diag(I, …, I, s·I) for the H/E balance s, λ = λ'/s²);
 //  - Ipopt's second-order derivative checker on the barrier (phase I and phase II).
 #include <gtest/gtest.h>
@@ -23,6 +23,7 @@
 #include "hinf/synth/config.hpp"
 #include "hinf/models/plant.hpp"
 #include "hinf/lmi/lmi_problem.hpp"
+#include "random_plants.hpp"
 #include "theorem1.hpp"
 
 namespace {
@@ -30,24 +31,19 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using hinf::lmi::LmiProblem;
+using hinf::test::random_matrix;
+using hinf::test::random_plant_with_dimensions;
 using hinf::Plant;
 
-MatrixXd rnd(std::mt19937& g, int r, int c) {
-  std::normal_distribution<double> N(0.0, 1.0);
-  MatrixXd M(r, c);
-  for (int j = 0; j < c; ++j)
-    for (int i = 0; i < r; ++i) M(i, j) = N(g);
-  return M;
-}
 MatrixXd rnd_sym(std::mt19937& g, int n) {
-  MatrixXd M = rnd(g, n, n);
+  MatrixXd M = random_matrix(g, n, n);
   return 0.5 * (M + M.transpose());
 }
 MatrixXd rnd_spd(std::mt19937& g, int n) {
-  MatrixXd M = rnd(g, n, n);
+  MatrixXd M = random_matrix(g, n, n);
   return M * M.transpose() + MatrixXd::Identity(n, n);
 }
-VectorXd rnd_vec(std::mt19937& g, int n) { return rnd(g, n, 1); }
+VectorXd rnd_vec(std::mt19937& g, int n) { return random_matrix(g, n, 1); }
 
 // Largest |entry| of A − B relative to max(1, ‖B‖_max).
 double rel_err(const MatrixXd& A, const MatrixXd& B) {
@@ -122,12 +118,12 @@ TEST(LmiLayer, ToyLmiEvaluateMatchesHandAssembly) {
   const auto w = L.add_scalar("w");
   EXPECT_EQ(L.num_params(), 6 + 8 + 1 + 1);
   EXPECT_EQ(L.order(), 10);
-  const MatrixXd L00 = rnd(g, 3, 3);
-  const MatrixXd L02 = rnd(g, 3, 2), R02 = rnd(g, 4, 4);
-  const MatrixXd L12 = rnd(g, 2, 4), R12 = rnd(g, 2, 4);  // L12 · Yᵀ · R12 at (1,2)
-  const MatrixXd L22 = rnd(g, 4, 2), R22 = rnd(g, 4, 4);  // symmetrised at (2,2)
-  const MatrixXd K11 = rnd_sym(g, 2), K01 = rnd(g, 3, 2), K33 = MatrixXd::Constant(1, 1, -1.0);
-  const MatrixXd C00 = -4 * MatrixXd::Identity(3, 3), C23 = rnd(g, 4, 1);
+  const MatrixXd L00 = random_matrix(g, 3, 3);
+  const MatrixXd L02 = random_matrix(g, 3, 2), R02 = random_matrix(g, 4, 4);
+  const MatrixXd L12 = random_matrix(g, 2, 4), R12 = random_matrix(g, 2, 4);  // L12 · Yᵀ · R12 at (1,2)
+  const MatrixXd L22 = random_matrix(g, 4, 2), R22 = random_matrix(g, 4, 4);  // symmetrised at (2,2)
+  const MatrixXd K11 = rnd_sym(g, 2), K01 = random_matrix(g, 3, 2), K33 = MatrixXd::Constant(1, 1, -1.0);
+  const MatrixXd C00 = -4 * MatrixXd::Identity(3, 3), C23 = random_matrix(g, 4, 1);
   L.add_term(0, 0, X, L00, L00.transpose());
   L.add_term(0, 2, Y, L02, R02);
   L.add_term(1, 2, Y, L12, R12, /*transpose=*/true);
@@ -140,8 +136,8 @@ TEST(LmiLayer, ToyLmiEvaluateMatchesHandAssembly) {
 
   for (int trial = 0; trial < 5; ++trial) {
     VectorXd x = VectorXd::Zero(L.num_params());
-    const MatrixXd Xv = rnd_sym(g, 3), Yv = rnd(g, 2, 4);
-    const double zv = rnd(g, 1, 1)(0, 0), wv = rnd(g, 1, 1)(0, 0);
+    const MatrixXd Xv = rnd_sym(g, 3), Yv = random_matrix(g, 2, 4);
+    const double zv = random_matrix(g, 1, 1)(0, 0), wv = random_matrix(g, 1, 1)(0, 0);
     L.set_value(X, Xv, x);
     L.set_value(Y, Yv, x);
     L.set_value(z, MatrixXd::Constant(1, 1, zv), x);
@@ -189,38 +185,20 @@ TEST(LmiLayer, ToyLmiGradientHessianMatchDenseTraces) {
   const auto X = L.add_symmetric("X", 3);
   const auto Y = L.add_full("Y", 2, 4);
   const auto z = L.add_scalar("z");
-  L.add_term(0, 0, X, rnd(g, 3, 3), MatrixXd::Identity(3, 3), false, true);
+  L.add_term(0, 0, X, random_matrix(g, 3, 3), MatrixXd::Identity(3, 3), false, true);
   L.add_term(0, 0, X, -2.0 * MatrixXd::Identity(3, 3), MatrixXd::Identity(3, 3));  // α·I factors
-  L.add_term(0, 2, Y, rnd(g, 3, 2), rnd(g, 4, 4));
-  L.add_term(1, 2, Y, rnd(g, 2, 4), rnd(g, 2, 4), true);
-  L.add_term(2, 2, Y, rnd(g, 4, 2), rnd(g, 4, 4), false, true);
-  L.add_term(1, 3, X, rnd(g, 2, 3), rnd(g, 3, 1));
+  L.add_term(0, 2, Y, random_matrix(g, 3, 2), random_matrix(g, 4, 4));
+  L.add_term(1, 2, Y, random_matrix(g, 2, 4), random_matrix(g, 2, 4), true);
+  L.add_term(2, 2, Y, random_matrix(g, 4, 2), random_matrix(g, 4, 4), false, true);
+  L.add_term(1, 3, X, random_matrix(g, 2, 3), random_matrix(g, 3, 1));
   L.add_scalar_term(1, 1, z, rnd_sym(g, 2));
-  L.add_scalar_term(0, 3, z, rnd(g, 3, 1));
+  L.add_scalar_term(0, 3, z, random_matrix(g, 3, 1));
   L.add_scalar_term(3, 3, z, -MatrixXd::Identity(1, 1));
   L.add_constant(1, 1, -MatrixXd::Identity(2, 2));
   check_derivatives_dense(L, g);
 }
 
 // ---------------------------------------------------------------- Theorem 1
-Plant random_plant(std::mt19937& g, int n, int p, int m, int q, int l, int j, int k) {
-  Plant P;
-  P.A = rnd(g, n, n);
-  P.A *= 0.7 / P.A.operatorNorm();
-  P.B = rnd(g, n, p);
-  P.C = rnd(g, m, n);
-  P.D = rnd(g, m, q);
-  P.L = rnd(g, l, n);
-  if (j > 0) {
-    P.H = 0.3 * rnd(g, n, j);  // deliberately unbalanced against E
-    P.E = 1e-3 * rnd(g, k, n);
-  } else {
-    P.H = MatrixXd(n, 0);
-    P.E = MatrixXd(0, n);
-  }
-  return P;
-}
-
 struct Dims {
   int n, p, m, q, l, j, k;
 };
@@ -232,7 +210,7 @@ TEST(LmiLayer, Theorem1GradientHessianMatchDenseTraces) {
   for (const Dims& d : kDims) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " p=" << d.p << " m=" << d.m << " q=" << d.q
                                     << " l=" << d.l << " j=" << d.j << " k=" << d.k);
-    const Plant P = random_plant(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
+    const Plant P = random_plant_with_dimensions(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
     const double s = hinf::synth::he_balance(P);
     const auto T = hinf::synth::build_theorem1(P, s);
     const int expected_vars = d.n * (d.n + 1) + d.n * d.n + d.n * d.m + d.l * d.n + 1 + (d.j > 0 ? 1 : 0);
@@ -242,7 +220,7 @@ TEST(LmiLayer, Theorem1GradientHessianMatchDenseTraces) {
   }
 }
 
-// Check 1 on graded matrices, like LMI (20) when a config's H and E are far apart in
+// Check 1 on graded matrices, like LMI docs/maths.md (18) when a config's H and E are far apart in
 // scale: M = S·M̃·S, M̃ = −Q diag(1e-10 … 1) Qᵀ (Q random orthogonal, 8×8), S = diag(1, …,
 // 1, 1e4, 1e4), so ‖M‖ ~ 1e8 while the eigenvalue nearest zero is ~ −1e-10, far below a
 // symmetric eigensolver's absolute accuracy on M (~ε‖M‖; on seeds 1 and 4 it returns a
@@ -284,10 +262,10 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
   std::mt19937 g(14);
   for (const Dims& d : kDims) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " j=" << d.j);
-    const Plant P = random_plant(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
+    const Plant P = random_plant_with_dimensions(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
     const bool unc = d.j > 0;
     const double s = hinf::synth::he_balance(P);
-    if (unc) {  // the balance equalises ‖sH‖_F and ‖E/s‖_F (SPEC §3)
+    if (unc) {  // the balance equalises ‖sH‖_F and ‖E/s‖_F (docs/maths.md (24))
       EXPECT_NEAR((s * P.H).norm(), (P.E / s).norm(), 1e-12 * (s * P.H).norm());
       EXPECT_NE(s, 1.0);
     }
@@ -361,9 +339,9 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   const auto X = L.add_symmetric("X", 3);
   const auto Y = L.add_full("Y", 2, 4);
   const auto z = L.add_scalar("z");
-  L.add_term(0, 0, X, rnd(g, 3, 3), MatrixXd::Identity(3, 3), false, true);
-  L.add_term(0, 2, Y, rnd(g, 3, 2), rnd(g, 4, 4));
-  L.add_term(1, 2, Y, rnd(g, 2, 4), rnd(g, 2, 4), true);
+  L.add_term(0, 0, X, random_matrix(g, 3, 3), MatrixXd::Identity(3, 3), false, true);
+  L.add_term(0, 2, Y, random_matrix(g, 3, 2), random_matrix(g, 4, 4));
+  L.add_term(1, 2, Y, random_matrix(g, 2, 4), random_matrix(g, 2, 4), true);
   L.add_scalar_term(1, 1, z, rnd_sym(g, 2));
   L.add_scalar_term(2, 2, z, -MatrixXd::Identity(4, 4));
   for (int b = 0; b < 3; ++b) L.add_constant(b, b, -MatrixXd::Identity(L.block_size(b), L.block_size(b)));
@@ -386,11 +364,11 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
 // LogDetBarrier::accurate_newton uses).
 TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
   std::mt19937 g(23);
-  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T1 = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const LmiProblem& L = T1.lmi;
   const int N = L.order(), np = L.num_params();
-  const MatrixXd T = rnd(g, N, N);
+  const MatrixXd T = random_matrix(g, N, N);
   MatrixXd H;
   L.hessian(T.transpose() * T, H);
   MatrixXd G(N * (N + 1) / 2, np);
@@ -408,7 +386,7 @@ TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
 // the QR path tangent equal the explicit ones (independent: LDLᵀ of the assembled H).
 TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
   std::mt19937 g(29);
-  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const VectorXd c = T.lmi.cost_of(T.g);
   hinf::sdp::Options st;
@@ -445,7 +423,7 @@ VectorXd phase1_point(const hinf::synth::Theorem1Lmi& T, std::mt19937& g, double
 
 TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase1) {
   std::mt19937 g(17);
-  const Plant P = random_plant(g, 4, 1, 2, 2, 3, 2, 1);
+  const Plant P = random_plant_with_dimensions(g, 4, 1, 2, 2, 3, 2, 1);
   const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   b.set_t(2.0);
@@ -477,7 +455,7 @@ void expect_checker_clean(const std::string& out) {
 
 TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
   std::mt19937 g(15);
-  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   // small t: Ipopt's forward differences (step 1e-7) lose u·|f|/1e-7 to round-off,
@@ -499,7 +477,7 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
 // point stays inside the LMI cone.
 TEST(LmiLayer, IpoptDerivativeCheckerPhase2) {
   std::mt19937 g(15);
-  const Plant P = random_plant(g, 3, 2, 1, 2, 2, 1, 2);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
   const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
   const int np = T.lmi.num_params();
   const VectorXd c = T.lmi.cost_of(T.g);

@@ -1,10 +1,10 @@
-#include "hinf/common/sha256.hpp"
+#include "config/sha256.hpp"
 
 #include <nettle/sha2.h>
 
 #include <cstdint>
 
-namespace hinf {
+namespace hinf::synth {
 
 std::string sha256_hex(const std::string& data) {
   sha256_ctx ctx;
@@ -21,4 +21,4 @@ std::string sha256_hex(const std::string& data) {
   return out;
 }
 
-}  // namespace hinf
+}  // namespace hinf::synth

@@ -1,10 +1,9 @@
-// The Hill/CW plant of SPEC §3 and its discretisations (see hill_model.hpp).
+// The Hill/CW plant of docs/maths.md §9.4–§9.5 and its discretisations (see hill_model.hpp).
 #include "hinf/synth/validate_plant.hpp"
-#include "hinf/synth/hill_model.hpp"
+#include "hinf/synth/hill_plant.hpp"
 
 #include <cmath>
 #include <string>
-#include <unsupported/Eigen/MatrixFunctions>
 
 #include "hinf/common/number_text.hpp"
 #include "hinf/common/error.hpp"
@@ -13,6 +12,7 @@ namespace hinf::synth {
 namespace {
 
 using Eigen::MatrixXd;
+namespace hill = hinf::models::hill;
 
 [[noreturn]] void fail(const std::string& message) {
   throw Error(ErrorCode::InvalidInput, message);
@@ -35,63 +35,28 @@ void require_finite_entries(const MatrixXd& M, const std::string& key) {
              ") = " + number_text(M(i, j)) + " is not finite");
 }
 
-// C and L default to the paper's [I₃ 0₃] and I₆ (SPEC §3 table).
-MatrixXd measurement_matrix(const HillModel& model) {
+// C and L default to the paper's [I₃ 0₃] and I₆ (docs/maths.md §9.8 table).
+MatrixXd measurement_matrix(const HillPlantSpec& model) {
   if (model.C.size() > 0) return model.C;
   MatrixXd C = MatrixXd::Zero(3, 6);
   C.leftCols(3).setIdentity();
   return C;
 }
 
-MatrixXd estimated_signal_matrix(const HillModel& model) {
+MatrixXd estimated_signal_matrix(const HillPlantSpec& model) {
   return model.L.size() > 0 ? model.L : MatrixXd::Identity(6, 6);
 }
 
-MatrixXd control_gain(const HillModel& model) {
+MatrixXd control_gain(const HillPlantSpec& model) {
   return model.K.size() > 0 ? model.K : MatrixXd::Zero(3, 6);
 }
 
-// A_c(ω) = A₁(ω) + G₀K, the continuous closed loop (SPEC §3, eqs. 1 and 3).
-MatrixXd closed_loop_A(const HillModel& model, double omega) {
-  return hill_continuous_A(omega) + hill_input_matrix(model.chaser_mass) * control_gain(model);
+// A_c(ω) = A₁(ω) + G₀K, the continuous closed loop (docs/maths.md (66)).
+hill::Matrix6 closed_loop_A(const HillPlantSpec& model, double omega) {
+  return hill::continuous_A(omega) + hill::input_matrix(model.chaser_mass) * control_gain(model);
 }
 
 }  // namespace
-
-MatrixXd hill_continuous_A(double omega) {
-  MatrixXd A1 = MatrixXd::Zero(6, 6);
-  A1.topRightCorner(3, 3).setIdentity();
-  // A₂₁ = diag(3ω², 0, −ω²)
-  A1(3, 0) = 3 * omega * omega;
-  A1(5, 2) = -omega * omega;
-  // A₂₂ = [0 2ω 0; −2ω 0 0; 0 0 0]
-  A1(3, 4) = 2 * omega;
-  A1(4, 3) = -2 * omega;
-  return A1;
-}
-
-MatrixXd hill_input_matrix(double chaser_mass) {
-  MatrixXd G0 = MatrixXd::Zero(6, 3);
-  G0.bottomRows(3).diagonal().setConstant(1.0 / chaser_mass);
-  return G0;
-}
-
-MatrixXd hill_uncertainty_H_a(double orbital_rate) {
-  MatrixXd Ha = MatrixXd::Zero(6, 6);
-  Ha(3, 0) = 3 * orbital_rate;  // H_a(4,1) = 3ω₀
-  Ha(3, 4) = 2;                 // H_a(4,5) = 2
-  Ha(4, 3) = -2;                // H_a(5,4) = −2
-  Ha(5, 2) = -orbital_rate;     // H_a(6,3) = −ω₀
-  return Ha;
-}
-
-MatrixXd hill_uncertainty_E_a(double orbital_rate, double delta_bar) {
-  const double quadratic = orbital_rate * (2 * delta_bar + delta_bar * delta_bar);
-  const double linear = orbital_rate * delta_bar;  // SPEC §3: ω₀δ̄, not the paper's ω₀δ
-  Eigen::VectorXd d(6);
-  d << quadratic, 0, quadratic, linear, linear, 0;
-  return d.asDiagonal();
-}
 
 MatrixXd hill_uncertainty_F(double delta, double delta_bar) {
   if (!std::isfinite(delta_bar) || !(delta_bar > 0))
@@ -99,14 +64,10 @@ MatrixXd hill_uncertainty_F(double delta, double delta_bar) {
   if (!std::isfinite(delta) || std::abs(delta) > delta_bar)
     fail("hill_uncertainty_F: delta = " + number_text(delta) + ": must satisfy |delta| <= " +
          number_text(delta_bar));
-  const double c = (2 * delta + delta * delta) / (2 * delta_bar + delta_bar * delta_bar);
-  const double r = delta / delta_bar;
-  Eigen::VectorXd d(6);
-  d << c, 0, c, r, r, 0;
-  return d.asDiagonal();
+  return hinf::models::hill::uncertainty_F(delta, delta_bar);
 }
 
-void validate_hill_model(const HillModel& model) {
+void validate_hill_model(const HillPlantSpec& model) {
   require_positive("hill.orbital_rate", model.orbital_rate, "rad/s");
   require_positive("hill.chaser_mass", model.chaser_mass, "kg");
   require_positive("hill.sample_time", model.sample_time, "s");
@@ -138,32 +99,20 @@ void validate_hill_model(const HillModel& model) {
   require_finite_entries(L, "hill.L");
 }
 
-Plant build_hill_plant(const HillModel& model) {
+Plant build_hill_plant(const HillPlantSpec& model) {
   validate_hill_model(model);
-  const double T = model.sample_time;
-  const MatrixXd Ac = closed_loop_A(model, model.orbital_rate);
-
+  const hill::Discrete d = hill::discretise(closed_loop_A(model, model.orbital_rate),
+                                            hill::input_matrix(model.chaser_mass), model.sample_time,
+                                            model.discretisation);
   Plant plant;
-  MatrixXd input_integral;  // maps ΔA₁ into the discrete ΔA
-  if (model.discretisation == HillModel::Discretisation::Euler) {
-    plant.A = MatrixXd::Identity(6, 6) + T * Ac;  // SPEC §3: A = I + T(A₁ + G₀K)
-    input_integral = T * MatrixXd::Identity(6, 6);  // ΔA = T·ΔA₁
-  } else {
-    // exp(T [A_c I; 0 0]) = [e^{T A_c}  ∫₀ᵀ e^{A_c s} ds; 0 I]
-    MatrixXd M = MatrixXd::Zero(12, 12);
-    M.topLeftCorner(6, 6) = Ac;
-    M.topRightCorner(6, 6).setIdentity();
-    const MatrixXd expM = (T * M).exp();
-    plant.A = expM.topLeftCorner(6, 6);
-    input_integral = expM.topRightCorner(6, 6);
-  }
+  plant.A = d.A;
   plant.B = model.B;
   plant.C = measurement_matrix(model);
   plant.D = model.D;
   plant.L = estimated_signal_matrix(model);
   if (model.delta_bar > 0) {
-    plant.H = input_integral * hill_uncertainty_H_a(model.orbital_rate);  // H = T·H_a (euler)
-    plant.E = hill_uncertainty_E_a(model.orbital_rate, model.delta_bar);  // E = E_a
+    plant.H = d.Gamma * hill::uncertainty_H_a(model.orbital_rate);             // H = Γ·H_a
+    plant.E = hill::uncertainty_E_a(model.orbital_rate, model.delta_bar);     // E = E_a
   } else {
     plant.H = MatrixXd::Zero(6, 0);
     plant.E = MatrixXd::Zero(0, 6);
@@ -172,15 +121,12 @@ Plant build_hill_plant(const HillModel& model) {
   return plant;
 }
 
-MatrixXd hill_exact_discrete_A(const HillModel& model, double delta) {
+MatrixXd hill_exact_discrete_A(const HillPlantSpec& model, double delta) {
   validate_hill_model(model);
   if (!std::isfinite(delta))
     fail("hill_exact_discrete_A: delta = " + number_text(delta) + ": must be finite");
-  const double T = model.sample_time;
-  const MatrixXd Ac = closed_loop_A(model, model.orbital_rate * (1 + delta));
-  if (model.discretisation == HillModel::Discretisation::Euler)
-    return MatrixXd::Identity(6, 6) + T * Ac;
-  return (T * Ac).exp();
+  const hill::Matrix6 Ac = closed_loop_A(model, model.orbital_rate * (1 + delta));
+  return hill::discretise(Ac, hill::input_matrix(model.chaser_mass), model.sample_time, model.discretisation).A;
 }
 
 }  // namespace hinf::synth

@@ -22,8 +22,12 @@
 #include "hinf/certify/riccati_filter.hpp"
 #include "hinf/certify/stability.hpp"
 #include "hinf/common/error.hpp"
+#include "random_plants.hpp"
 
 using Eigen::MatrixXd;
+using hinf::test::random_matrix;
+using hinf::test::random_nominal_plant;
+using hinf::test::random_stable_matrix;
 
 namespace {
 
@@ -60,21 +64,6 @@ double sweep_max(const MatrixXd& A, const MatrixXd& B, const MatrixXd& C, const 
     h /= 100.0;
   }
   return best;
-}
-
-MatrixXd randn(int r, int c, std::mt19937_64& rng) {
-  std::normal_distribution<double> N(0.0, 1.0);
-  MatrixXd M(r, c);
-  for (int j = 0; j < c; ++j)
-    for (int i = 0; i < r; ++i) M(i, j) = N(rng);
-  return M;
-}
-
-// Random Schur-stable matrix with spectral radius `rho`.
-MatrixXd random_stable(int n, double rho, std::mt19937_64& rng) {
-  MatrixXd A = randn(n, n, rng);
-  Eigen::EigenSolver<MatrixXd> es(A, false);
-  return A * (rho / es.eigenvalues().cwiseAbs().maxCoeff());
 }
 
 // Bounded-real lemma by the Riccati (game) recursion, D = 0:
@@ -161,19 +150,6 @@ hinf::Plant scalar_plant(double a, double b, double c, double d, double l) {
   return p;
 }
 
-hinf::Plant random_plant(int n, int p, int m, int l, double rho, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  hinf::Plant pl;
-  pl.A = random_stable(n, rho, rng);
-  pl.B = randn(n, p, rng);
-  pl.C = randn(m, n, rng);
-  pl.D = randn(m, m, rng) * 0.3 + MatrixXd::Identity(m, m);
-  pl.L = randn(l, n, rng);
-  pl.H.resize(n, 0);
-  pl.E.resize(0, n);
-  return pl;
-}
-
 double error_norm(const hinf::Plant& plant, const hinf::Filter& f, double tol = 1e-10) {
   return hinf::certify::discrete_hinf_norm(hinf::certify::error_system(plant, f), tol).norm;
 }
@@ -238,9 +214,9 @@ TEST(DiscreteHinfNorm, MimoDiagonalIsMaxOfChannels) {
   const double exact = std::max({2.0, 2.5, ch3});
   ASSERT_GT(ch3, 2.5);  // the resonant channel dominates
   std::mt19937_64 rng(7);
-  const MatrixXd T = MatrixXd::Identity(4, 4) + 0.4 * randn(4, 4, rng);
-  const MatrixXd U = Eigen::HouseholderQR<MatrixXd>(randn(3, 3, rng)).householderQ();
-  const MatrixXd V = Eigen::HouseholderQR<MatrixXd>(randn(3, 3, rng)).householderQ();
+  const MatrixXd T = MatrixXd::Identity(4, 4) + 0.4 * random_matrix(rng, 4, 4);
+  const MatrixXd U = Eigen::HouseholderQR<MatrixXd>(random_matrix(rng, 3, 3)).householderQ();
+  const MatrixXd V = Eigen::HouseholderQR<MatrixXd>(random_matrix(rng, 3, 3)).householderQ();
   const Eigen::PartialPivLU<MatrixXd> Tlu(T);
   const MatrixXd At = Tlu.solve(A * T), Bt = Tlu.solve(B) * V, Ct = U * C * T;
   const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(At, Bt, Ct, MatrixXd::Zero(3, 3));
@@ -278,8 +254,8 @@ TEST(DiscreteHinfNorm, RandomSystemsAgainstDenseSweep) {
   std::mt19937_64 rng(20240601);
   for (int trial = 0; trial < 5; ++trial) {
     const int n = 6, p = 2, l = 3;
-    const MatrixXd A = random_stable(n, 0.95, rng), B = randn(n, p, rng), C = randn(l, n, rng);
-    const MatrixXd D = trial % 2 ? MatrixXd(0.3 * randn(l, p, rng)) : MatrixXd::Zero(l, p);
+    const MatrixXd A = random_stable_matrix(rng, n, 0.95), B = random_matrix(rng, n, p), C = random_matrix(rng, l, n);
+    const MatrixXd D = trial % 2 ? MatrixXd(0.3 * random_matrix(rng, l, p)) : MatrixXd::Zero(l, p);
     const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     const double sweep = sweep_max(A, B, C, D);
     // The sweep is a lower bound; the norm must not be below it, nor far above it.
@@ -297,8 +273,8 @@ TEST(DiscreteHinfNorm, MultiStepLevelSetIterationsAgainstDenseSweep) {
   int multi = 0;
   for (int t = 0; t < 600 && multi < 3; ++t) {
     const int n = 2 + t % 7, p = 1 + t % 3, l = 1 + t % 2;
-    const MatrixXd A = random_stable(n, 0.5 + 0.49 * (t % 5) / 4.0, rng), B = randn(n, p, rng), C = randn(l, n, rng);
-    const MatrixXd D = t % 3 == 0 ? MatrixXd(randn(l, p, rng)) : MatrixXd::Zero(l, p);
+    const MatrixXd A = random_stable_matrix(rng, n, 0.5 + 0.49 * (t % 5) / 4.0), B = random_matrix(rng, n, p), C = random_matrix(rng, l, n);
+    const MatrixXd D = t % 3 == 0 ? MatrixXd(random_matrix(rng, l, p)) : MatrixXd::Zero(l, p);
     const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     if (res.iterations < 2) continue;
     ++multi;
@@ -313,7 +289,7 @@ TEST(DiscreteHinfNorm, PeakValueAndBoundedRealRiccatiRecursion) {
   std::mt19937_64 rng(99);
   for (int trial = 0; trial < 4; ++trial) {
     const int n = 5 + trial, p = 1 + trial % 3, l = 2;
-    const MatrixXd A = random_stable(n, 0.9, rng), B = randn(n, p, rng), C = randn(l, n, rng);
+    const MatrixXd A = random_stable_matrix(rng, n, 0.9), B = random_matrix(rng, n, p), C = random_matrix(rng, l, n);
     const MatrixXd D = MatrixXd::Zero(l, p);
     const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(A, B, C, D);
     // σ_max at the returned peak, evaluated independently, equals the norm.
@@ -339,7 +315,7 @@ TEST(DiscreteHinfNorm, RejectsUnstableSystemNamingSpectralRadius) {
 
 TEST(DiscreteHinfNorm, FortyEightStatesIsFastAndCorrect) {
   // Error system of a random 24-state plant with its Kalman predictor (48 states).
-  const hinf::Plant plant = random_plant(24, 6, 3, 6, 0.98, 4242);
+  const hinf::Plant plant = random_nominal_plant(24, 6, 3, 6, 0.98, 4242);
   const hinf::certify::HinfPredictorLevel kf = hinf::certify::hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
   ASSERT_TRUE(kf.feasible) << kf.reason;
   const hinf::StateSpace es = hinf::certify::error_system(plant, kf.filter);
@@ -364,17 +340,17 @@ TEST(ErrorSystem, MatchesTimeDomainSimulationOfPlantAndFilter) {
   // Simulate plant (with a fixed admissible F) and filter separately; e = z − z_F must
   // equal the output of the error system driven by τ = [w; v].
   std::mt19937_64 rng(5);
-  hinf::Plant pl = random_plant(3, 2, 2, 2, 0.8, 11);
-  pl.H = randn(3, 2, rng) * 0.1;
-  pl.E = randn(1, 3, rng);
-  hinf::Filter f{random_stable(3, 0.7, rng), randn(3, 2, rng), randn(2, 3, rng)};
+  hinf::Plant pl = random_nominal_plant(3, 2, 2, 2, 0.8, 11);
+  pl.H = random_matrix(rng, 3, 2) * 0.1;
+  pl.E = random_matrix(rng, 1, 3);
+  hinf::Filter f{random_stable_matrix(rng, 3, 0.7), random_matrix(rng, 3, 2), random_matrix(rng, 2, 3)};
   MatrixXd F(2, 1);
   F << 0.6, -0.8;
   const hinf::StateSpace es = hinf::certify::error_system(pl, f, F);
-  Eigen::VectorXd x = randn(3, 1, rng), xf = randn(3, 1, rng), xi(6);
+  Eigen::VectorXd x = random_matrix(rng, 3, 1), xf = random_matrix(rng, 3, 1), xi(6);
   xi << x, xf;
   for (int k = 0; k < 30; ++k) {
-    const Eigen::VectorXd w = randn(2, 1, rng), v = randn(2, 1, rng);
+    const Eigen::VectorXd w = random_matrix(rng, 2, 1), v = random_matrix(rng, 2, 1);
     Eigen::VectorXd tau(4);
     tau << w, v;
     const Eigen::VectorXd e_direct = pl.L * x - f.C_F * xf;
@@ -388,7 +364,7 @@ TEST(ErrorSystem, MatchesTimeDomainSimulationOfPlantAndFilter) {
 }
 
 TEST(ErrorSystem, RejectsMismatchedDimensions) {
-  hinf::Plant pl = random_plant(3, 2, 2, 2, 0.8, 1);
+  hinf::Plant pl = random_nominal_plant(3, 2, 2, 2, 0.8, 1);
   hinf::Filter f{MatrixXd::Zero(3, 3), MatrixXd::Zero(3, 1), MatrixXd::Zero(2, 3)};  // B_F wrong
   EXPECT_THROW(hinf::certify::error_system(pl, f), hinf::Error);
 }
@@ -428,10 +404,10 @@ TEST(Stability, SampledRobustStabilityFindsTheVertex) {
 
 TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {
   std::mt19937_64 rng(3);
-  hinf::Plant pl = random_plant(4, 2, 2, 2, 0.9, 3);
-  pl.H = randn(4, 3, rng) * 0.05;
-  pl.E = randn(2, 4, rng);
-  const hinf::Filter f{random_stable(4, 0.5, rng), randn(4, 2, rng), randn(2, 4, rng)};
+  hinf::Plant pl = random_nominal_plant(4, 2, 2, 2, 0.9, 3);
+  pl.H = random_matrix(rng, 4, 3) * 0.05;
+  pl.E = random_matrix(rng, 2, 4);
+  const hinf::Filter f{random_stable_matrix(rng, 4, 0.5), random_matrix(rng, 4, 2), random_matrix(rng, 2, 4)};
   const hinf::certify::StabilitySample a = hinf::certify::sampled_robust_stability(pl, f, 200, 77u);
   const hinf::certify::StabilitySample b = hinf::certify::sampled_robust_stability(pl, f, 200, 77u);
   EXPECT_EQ(a.samples, 1 + 2 + 2 * 3 * 2 + 200);
@@ -444,8 +420,8 @@ TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {
 
 TEST(FilterCompare, InvariantUnderSimilarity) {
   std::mt19937_64 rng(12);
-  const hinf::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
-  const MatrixXd T = MatrixXd::Identity(6, 6) + 0.3 * randn(6, 6, rng);
+  const hinf::Filter a{random_stable_matrix(rng, 6, 0.9), random_matrix(rng, 6, 3), random_matrix(rng, 6, 6)};
+  const MatrixXd T = MatrixXd::Identity(6, 6) + 0.3 * random_matrix(rng, 6, 6);
   const Eigen::PartialPivLU<MatrixXd> Tlu(T);
   const hinf::Filter b{Tlu.solve(a.A_F * T), Tlu.solve(a.B_F), a.C_F * T};
   const hinf::certify::FilterDifference d = hinf::certify::compare_filters(a, b);
@@ -457,7 +433,7 @@ TEST(FilterCompare, InvariantUnderSimilarity) {
 TEST(FilterCompare, DetectsOnePercentChangeOfBF) {
   // T_b = 1.01 T_a exactly, so ‖T_a − T_b‖∞ / ‖T_a‖∞ = 0.01.
   std::mt19937_64 rng(13);
-  const hinf::Filter a{random_stable(6, 0.9, rng), randn(6, 3, rng), randn(6, 6, rng)};
+  const hinf::Filter a{random_stable_matrix(rng, 6, 0.9), random_matrix(rng, 6, 3), random_matrix(rng, 6, 6)};
   hinf::Filter b = a;
   b.B_F *= 1.01;
   const hinf::certify::FilterDifference d = hinf::certify::compare_filters(a, b);
@@ -471,7 +447,7 @@ TEST(FilterCompare, DetectsOnePercentChangeOfBF) {
 TEST(FilterCompare, DifferentOrdersSameTransferFunction) {
   // b = a plus an unobservable extra state: same transfer function.
   std::mt19937_64 rng(14);
-  const hinf::Filter a{random_stable(4, 0.8, rng), randn(4, 2, rng), randn(3, 4, rng)};
+  const hinf::Filter a{random_stable_matrix(rng, 4, 0.8), random_matrix(rng, 4, 2), random_matrix(rng, 3, 4)};
   hinf::Filter b{MatrixXd::Zero(5, 5), MatrixXd::Zero(5, 2), MatrixXd::Zero(3, 5)};
   b.A_F.topLeftCorner(4, 4) = a.A_F;
   b.A_F(4, 4) = 0.3;
@@ -534,7 +510,7 @@ TEST(RiccatiFilter, SmallMeasurementNoiseClosedFormBracket) {
 }
 
 TEST(RiccatiFilter, LargeGammaTendsToKalmanPredictor) {
-  const hinf::Plant pl = random_plant(4, 2, 2, 3, 0.9, 31);
+  const hinf::Plant pl = random_nominal_plant(4, 2, 2, 3, 0.9, 31);
   // Kalman predictor DARE by fixed-point iteration of the Riccati recursion (independent).
   const MatrixXd Q = pl.B * pl.B.transpose(), R = pl.D * pl.D.transpose();
   MatrixXd P = Q;
@@ -560,7 +536,7 @@ TEST(RiccatiFilter, LargeGammaTendsToKalmanPredictor) {
 
 TEST(RiccatiFilter, CentralFilterAchievesTheLevel) {
   for (unsigned seed : {41u, 42u, 43u}) {
-    const hinf::Plant pl = random_plant(4, 2, 2, 3, 0.95, seed);
+    const hinf::Plant pl = random_nominal_plant(4, 2, 2, 3, 0.95, seed);
     const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
     const double LB = Eigen::JacobiSVD<MatrixXd>(pl.L * pl.B).singularValues()(0);
     EXPECT_GE(opt.gamma, LB);
@@ -580,7 +556,7 @@ TEST(RiccatiFilter, CentralFilterAchievesTheLevel) {
 }
 
 TEST(RiccatiFilter, LocalSearchOverSecondOrderFiltersCannotBeatGammaStar) {
-  const hinf::Plant pl = random_plant(2, 1, 1, 1, 0.9, 77);
+  const hinf::Plant pl = random_nominal_plant(2, 1, 1, 1, 0.9, 77);
   const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
   const hinf::certify::HinfPredictorLevel start = hinf::certify::hinf_predictor_at_level(pl, opt.gamma * 1.05);
   ASSERT_TRUE(start.feasible);

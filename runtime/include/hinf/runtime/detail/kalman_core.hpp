@@ -1,0 +1,145 @@
+// What the EKF and the REKF share (docs/maths.md §12–§13): the model and measurement, the
+// state x, covariances P, P0, Q, R, the last update's S, K and innovation, the NIS gate and
+// the covariance policy, their configuration and accessors, and the two halves of a step:
+//     predict:  x ← f(x, u),  P ← F P̄ Fᵀ (+ extra) + Q             (symmetrised)
+//     update:   ν = residual(y, h(x)),  Joseph update from P̄ with R̄  (joseph_update.hpp)
+// where the EKF passes P̄ = P, R̄ = R and the REKF P̄ = M(P), R̄ = γ²CCᵀ + R, extra = γ²AAᵀ.
+// Fixed sizes throughout: no heap allocation in a step.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "hinf/runtime/detail/covariance.hpp"
+#include "hinf/runtime/detail/joseph_update.hpp"
+#include "hinf/runtime/filter_status.hpp"
+
+namespace hinf::runtime::detail {
+
+template <class Model, class Measurement>
+class KalmanCore {
+ public:
+  static constexpr int NX = Model::NX;
+  static constexpr int NU = Model::NU;
+  static constexpr int NZ = Measurement::NZ;
+  static_assert(NX > 0 && NU > 0 && NZ > 0, "Kalman filter: dimensions must be positive");
+  static_assert(Measurement::NX == Model::NX, "Kalman filter: model and measurement state dimensions differ");
+
+  using State = Eigen::Matrix<double, NX, 1>;
+  using Input = Eigen::Matrix<double, NU, 1>;
+  using Observation = Eigen::Matrix<double, NZ, 1>;
+  using StateCov = Eigen::Matrix<double, NX, NX>;
+  using ObsCov = Eigen::Matrix<double, NZ, NZ>;
+  using Gain = Eigen::Matrix<double, NX, NZ>;
+  using MeasurementJacobian = Eigen::Matrix<double, NZ, NX>;
+
+  // x(0) and P(0); P0 (symmetric PD, else std::invalid_argument) is also the reset value.
+  void init(const State& x0, const StateCov& P0) {
+    if (!x0.allFinite()) throw std::invalid_argument(std::string(name_) + ": x0 has a non-finite entry");
+    require_positive_definite(P0, name_, "P0");
+    x_ = x0;
+    P0_ = 0.5 * (P0 + P0.transpose());
+    P_ = P0_;
+  }
+
+  // Configuration.
+  void set_Q(const StateCov& Q) {
+    require_positive_semidefinite(Q, name_, "Q");
+    Q_ = 0.5 * (Q + Q.transpose());
+  }
+  void set_R(const ObsCov& R) {
+    require_positive_definite(R, name_, "R");
+    R_ = 0.5 * (R + R.transpose());
+  }
+  void set_covariance_policy(CovariancePolicy p) { policy_ = p; }
+  // Reject updates whose NIS exceeds the threshold (e.g. a chi-square quantile with NZ
+  // degrees of freedom). Default +infinity: no gating.
+  void set_innovation_gate(double nis_threshold) { nis_gate_ = nis_threshold; }
+  // Overwrite the state (e.g. after an external reset); P is not checked here.
+  void set_state(const State& x, const StateCov& P) {
+    x_ = x;
+    P_ = P;
+  }
+
+  const State& x() const { return x_; }
+  const StateCov& P() const { return P_; }
+  const StateCov& P0() const { return P0_; }
+  const StateCov& Q() const { return Q_; }
+  const ObsCov& R() const { return R_; }
+  const Gain& K() const { return K_; }             // gain of the last successful update
+  const ObsCov& S() const { return S_; }           // innovation covariance of the last update
+  const Observation& innovation() const { return nu_; }
+  double nis() const { return nis_; }              // nu^T S^-1 nu of the last update
+  const Model& model() const { return model_; }
+  const Measurement& measurement() const { return meas_; }
+
+ protected:
+  // Q PSD, R PD; throws std::invalid_argument naming `name` otherwise.
+  KalmanCore(const Model& model, const Measurement& measurement, const StateCov& Q, const ObsCov& R,
+             const char* name)
+      : model_(model), meas_(measurement), name_(name) {
+    set_Q(Q);
+    set_R(R);
+    x_.setZero();
+    P_.setIdentity();
+    P0_.setIdentity();
+    K_.setZero();
+    S_.setZero();
+    nu_.setZero();
+  }
+
+  // f(x, u) and its Jacobian F; Ok, or why the step cannot be taken.
+  FilterStatus evaluate_process(const Input& u, State& x_next, StateCov& F) const {
+    if (!u.allFinite()) return FilterStatus::NonFiniteInput;
+    x_next = model_.f(x_, u);
+    F = model_.F(x_, u);
+    if (!x_next.allFinite() || !F.allFinite()) return FilterStatus::ModelNotFinite;
+    return FilterStatus::Ok;
+  }
+
+  // x ← x_next, P ← F P̄ Fᵀ (+ extra) + Q, symmetrised, then the covariance policy.
+  FilterStatus finish_predict(const State& x_next, const StateCov& F, const StateCov& Pbar, const StateCov* extra) {
+    const StateCov FP = F * Pbar;
+    P_.noalias() = FP * F.transpose();
+    if (extra) P_ += *extra;
+    P_ += Q_;
+    symmetrise(P_);
+    x_ = x_next;
+    return apply_covariance_policy<NX>(P_, P0_, policy_);
+  }
+
+  // h(x) and its Jacobian H; Ok, or why the update cannot be taken.
+  FilterStatus evaluate_measurement(const Observation& y, Observation& y_pred, MeasurementJacobian& H) const {
+    if (!y.allFinite()) return FilterStatus::NonFiniteInput;
+    y_pred = meas_.h(x_);
+    H = meas_.H(x_);
+    if (!y_pred.allFinite() || !H.allFinite()) return FilterStatus::ModelNotFinite;
+    return FilterStatus::Ok;
+  }
+
+  // ν = residual(y, y_pred), the Joseph update from P̄ with R̄, then the covariance policy.
+  FilterStatus finish_update(const Observation& y, const Observation& y_pred, const MeasurementJacobian& H,
+                             const StateCov& Pbar, const ObsCov& Rbar) {
+    nu_ = meas_.residual(y, y_pred);
+    const FilterStatus s = joseph_update<NX, NZ>(x_, P_, Pbar, H, Rbar, nu_, nis_gate_, nis_, S_, K_);
+    if (s != FilterStatus::Ok) return s;
+    return apply_covariance_policy<NX>(P_, P0_, policy_);
+  }
+
+  Model model_;
+  Measurement meas_;
+  const char* name_;
+  State x_;
+  StateCov P_, P0_, Q_;
+  ObsCov R_, S_;
+  Gain K_;
+  Observation nu_;
+  double nis_ = 0.0;
+  double nis_gate_ = std::numeric_limits<double>::infinity();
+  CovariancePolicy policy_ = CovariancePolicy::Report;
+};
+
+}  // namespace hinf::runtime::detail

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# `analyze --json` escapes the gains path: run on a copy of GAINS whose name holds a double
+# quote and a backslash, the output must be one line of valid JSON (no NaN/Infinity) whose
+# "gains" is that path, with the keys in the documented order.
+#   cli_analyze_json.sh EXE PYTHON3 CONFIG GAINS
+set -u
+exe=$1 python=$2 config=$3 gains=$4
+work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-cli-json-XXXXXX")
+trap 'rm -rf "$work"' EXIT
+odd="$work/odd \"name\" \\ gains.yaml"
+cp "$gains" "$odd"
+"$exe" analyze "$config" "$odd" --json --delta-points 3 >"$work/stdout" 2>"$work/stderr"
+rc=$?
+if [ "$rc" -ne 0 ]; then
+  echo "FAIL: analyze --json exited $rc"
+  cat "$work/stderr"
+  exit 1
+fi
+"$python" - "$odd" "$work/stdout" <<'PY' || { echo "--- stdout"; cat "$work/stdout"; exit 1; }
+import json, sys
+
+path, out = sys.argv[1], sys.argv[2]
+text = open(out, encoding="utf-8").read()
+
+def refuse(name):
+    raise ValueError("non-finite number " + name)
+
+assert text.endswith("\n") and text.count("\n") == 1, "not one line"
+d = json.loads(text, parse_constant=refuse)
+assert d["gains"] == path, "gains %r != %r" % (d["gains"], path)
+want = ["gains", "claimed_gamma", "spectral_radius_nominal", "hinf_norm_nominal",
+        "hinf_norm_peak_frequency", "spectral_radius_sampled_max", "robust_bound",
+        "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
+assert list(d) == want, list(d)
+assert len(d["delta_grid"]) == 3, d["delta_grid"]
+for p in d["delta_grid"]:
+    assert list(p) == ["delta", "spectral_radius", "hinf_norm"], list(p)
+for k in want[2:9]:
+    assert isinstance(d[k], (int, float)), k
+print("ok: gains = %r" % d["gains"])
+PY
