@@ -7,7 +7,7 @@
 namespace hinf::cli {
 
 void add_verify(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("verify", "re-derive the certificate (SPEC §2 checks 2-4) of a gains file against a config");
+  auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config");
   const auto args = add_config_gains_args(*cmd, "gains YAML (must state gamma)");
   cmd->callback([=, &action] {
     action = [=]() -> int {

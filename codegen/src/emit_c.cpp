@@ -112,7 +112,7 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
   std::ostringstream os;
   os << provenance(p + ".h", "robust H-infinity filter '" + p + "' (C99)", g, o)
      << "/*\n"
-     << " * The filter (a one-step predictor, SPEC eq. 12):\n"
+     << " * The filter (a one-step predictor, docs/maths.md (5)-(6)):\n"
      << " *   z(k)     = C_F x_F(k)                 estimate of z(k) from y(0..k-1)\n"
      << " *   x_F(k+1) = A_F x_F(k) + B_F y(k)\n"
      << " *   x_F(0)   = pinv(C_F) z0               (pseudo-inverse computed offline)\n"

@@ -39,7 +39,7 @@ void preflight(const Plant& plant, const Settings& settings) {
                     fmt(ev(worst).real()) + (ev(worst).imag() >= 0 ? " + " : " - ") +
                     fmt(std::abs(ev(worst).imag())) +
                     "i); the filtering error contains the plant state, so no filter can make it "
-                    "stable (SPEC §1)");
+                    "stable (docs/maths.md §2.5)");
   }
   if (plant.uncertain()) {
     // The zero filter's error system has the plant's A + HFE as its top-left block.
@@ -81,7 +81,7 @@ double solve_analysis(const Plant& plant, const Filter& filter, const Settings& 
   const VectorXd c = A.lmi.cost_of(A.g);
   const sdp::Solution sol = sdp::minimize_linear(A.lmi, c, solver_options(settings));
   if (sol.status != sdp::Status::Solved)
-    throw Error(error_code_for(sol.status), "robust analysis LMI (SPEC §2 check 4): " +
+    throw Error(error_code_for(sol.status), "robust analysis LMI (docs/maths.md (50)): " +
                                                 std::string(sdp::status_message(sol.status)) +
                                                 (sol.detail.empty() ? "" : ": " + sol.detail));
   return sol.objective;
@@ -214,7 +214,7 @@ void certify_result(const Plant& plant, const certify::Theorem1Point& pt, const 
 // Why a certificate failed, check by check.
 std::string failed_checks(const Certificate& cert, double gamma) {
   std::string why;
-  if (!cert.lmi_negative_definite) why += " LMI (20) not negative definite (max eigenvalue " + fmt(cert.lmi_max_eig) + ");";
+  if (!cert.lmi_negative_definite) why += " LMI (18) not negative definite (max eigenvalue " + fmt(cert.lmi_max_eig) + ");";
   if (!cert.schur_stable)
     why += " error system not Schur stable (spectral radius " +
            fmt(std::max(cert.spectral_radius_nominal, cert.spectral_radius_sampled_max)) + ");";

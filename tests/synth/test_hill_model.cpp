@@ -274,7 +274,7 @@ TEST(HillModel, PaperConfigsLoadWithPaperDimensions) {
     EXPECT_EQ(P.j(), 6);
     EXPECT_EQ(P.k(), 6);
     ASSERT_TRUE(cfg.hill.has_value());
-    EXPECT_EQ(cfg.hill->K, paper_K()) << "K in " << name << " differs from SPEC §3";
+    EXPECT_EQ(cfg.hill->K, paper_K()) << "K in " << name << " differs from docs/maths.md (77)";
     EXPECT_EQ(cfg.hill->discretisation, hinf::models::Discretisation::Euler);
     const double dbar = std::string(name) == "paper-dbar1.yaml" ? 1.0 : 0.05;
     EXPECT_EQ(cfg.hill->delta_bar, dbar);

@@ -63,7 +63,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
     reader.fail(root, "the config has neither 'system' nor 'hill'; give exactly one");
   if (hill && uncertainty)
     reader.fail(uncertainty, "'uncertainty' is only allowed with 'system'; with 'hill' the "
-                             "uncertainty comes from hill.delta_bar (SPEC §3)");
+                             "uncertainty comes from hill.delta_bar (docs/maths.md §9.4)");
 
   try {
     if (system) {
