@@ -120,6 +120,77 @@ ScaledBoundedReal::Slope ScaledBoundedReal::scaled_norm_and_slope(double gamma, 
   return out;
 }
 
+// log‖G_λ‖∞ is convex in d = log λ, with slopes from the top singular vectors at the peak
+// frequency. The minimiser stays bracketed by [d_l, d_r] with slope(d_l) < 0 < slope(d_r);
+// the tangents there bound the minimum from below where they meet (convexity). Trial
+// points alternate between that meeting point (exact at a kink, where two peak
+// frequencies trade places — the paper's case) and the secant zero of the slope
+// (superlinear where the minimum is smooth), with a bisection whenever three trials have
+// not halved the bracket. Stops when the best value is within kLogNormGap of the bound,
+// or when the bound is ≥ 0 and only the verdict was asked for (then min ‖G_λ‖∞ ≥ 1 up to
+// the norms' accuracy).
+bool ScaledBoundedReal::slope_search(double gamma, double d0, Best& best) {
+  const double a = d0 - kLogLambdaHalfWidth, b = d0 + kLogLambdaHalfWidth;
+  const Slope sa = scaled_norm_and_slope(gamma, a);
+  best.record(a, sa.norm);
+  const Slope sb = best.done() ? Slope{} : scaled_norm_and_slope(gamma, b);
+  best.record(b, sb.norm);
+  if (best.done() || !sa.slope_ok || !sb.slope_ok || !(sa.slope < 0) || !(sb.slope > 0)) return false;
+  double dl = a, fl = std::log(sa.norm), sl = sa.slope;
+  double dr = b, fr = std::log(sb.norm), sr = sb.slope;
+  double width_before[3] = {INFINITY, INFINITY, INFINITY};
+  for (int it = 0; it < kSlopeSearchMaxNorms && !best.done(); ++it) {
+    const double meet = (fr - fl + sl * dl - sr * dr) / (sl - sr);
+    const double bound = fl + sl * (meet - dl);
+    if (dr - dl <= kLogLambdaWidth || std::log(best.f) - bound <= kLogNormGap ||
+        (best.stop_when_feasible && bound >= 0))
+      return true;
+    const bool slow = dr - dl > 0.5 * width_before[it % 3];
+    width_before[it % 3] = dr - dl;
+    const double secant = (dl * sr - dr * sl) / (sr - sl);
+    double m = slow ? 0.5 * (dl + dr) : (it % 2 == 0 ? meet : secant);
+    const double pad = 0.25 * kLogLambdaWidth;
+    if (!std::isfinite(m)) m = 0.5 * (dl + dr);
+    m = std::min(std::max(m, dl + pad), dr - pad);
+    const Slope p = scaled_norm_and_slope(gamma, m);
+    best.record(m, p.norm);
+    if (!p.slope_ok) return false;
+    if (p.slope < 0) {
+      dl = m, fl = std::log(p.norm), sl = p.slope;
+    } else {
+      dr = m, fr = std::log(p.norm), sr = p.slope;
+    }
+  }
+  return false;
+}
+
+// Golden-section search over the whole bracket, which needs only the norm's unimodality.
+void ScaledBoundedReal::golden_section_search(double gamma, double d0, Best& best) {
+  double a = d0 - kLogLambdaHalfWidth, b = d0 + kLogLambdaHalfWidth;
+  auto norm_at = [&](double d) {
+    const double f = scaled_norm(gamma, std::exp(d));
+    best.record(d, f);
+    return f;
+  };
+  double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
+  double f1 = norm_at(x1), f2 = norm_at(x2);
+  for (int it = 0; it < kGoldenSteps && !best.done(); ++it) {
+    if (f1 <= f2) {  // the minimum of the unimodal function is in [a, x2]
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - kInvPhi * (b - a);
+      f1 = norm_at(x1);
+    } else {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + kInvPhi * (b - a);
+      f2 = norm_at(x2);
+    }
+  }
+}
+
 ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
   const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
@@ -129,99 +200,25 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
     out.feasible = out.scaled_norm < 1.0;
     return out;
   }
-  double best_d = 0, best_f = INFINITY;
-  auto record = [&](double d, double f) {
-    if (f < best_f) best_f = f, best_d = d;
-  };
-  auto done = [&] { return stop_when_feasible && best_f < 1.0; };
+  Best best;
+  best.stop_when_feasible = stop_when_feasible;
   // Bracket centred at the λ balancing the uncertainty loop's two gains ‖H̄‖/√λ ~ √λ‖Ē‖/γ.
   const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
-  double a = d0 - kLogLambdaHalfWidth, b = d0 + kLogLambdaHalfWidth;
-
-  // 1. log‖G_λ‖∞ is convex in d = log λ, with slopes from the top singular vectors at
-  //    the peak frequency. The minimiser stays bracketed by [d_l, d_r] with slope(d_l) < 0
-  //    < slope(d_r); the tangents there bound the minimum from below where they meet
-  //    (convexity). Trial points alternate between that meeting point (exact at a kink,
-  //    where two peak frequencies trade places — the paper's case) and the secant zero of
-  //    the slope (superlinear where the minimum is smooth), with a bisection whenever
-  //    three trials have not halved the bracket. Stops when the best value is within
-  //    kLogNormGap of the bound, or when the bound is ≥ 0 and only the verdict was asked
-  //    for (then min ‖G_λ‖∞ ≥ 1 up to the norms' accuracy).
-  const Slope sa = scaled_norm_and_slope(gamma, a);
-  record(a, sa.norm);
-  const Slope sb = done() ? Slope{} : scaled_norm_and_slope(gamma, b);
-  record(b, sb.norm);
-  bool located = false;  // the minimum of log‖G_λ‖∞ known to kLogNormGap
-  if (!done() && sa.slope_ok && sb.slope_ok && sa.slope < 0 && sb.slope > 0) {
-    double dl = a, fl = std::log(sa.norm), sl = sa.slope;
-    double dr = b, fr = std::log(sb.norm), sr = sb.slope;
-    double width_before[3] = {INFINITY, INFINITY, INFINITY};
-    for (int it = 0; it < kSlopeSearchMaxNorms && !done(); ++it) {
-      const double meet = (fr - fl + sl * dl - sr * dr) / (sl - sr);
-      const double bound = fl + sl * (meet - dl);
-      if (dr - dl <= kLogLambdaWidth || std::log(best_f) - bound <= kLogNormGap ||
-          (stop_when_feasible && bound >= 0)) {
-        located = true;
-        break;
-      }
-      const bool slow = dr - dl > 0.5 * width_before[it % 3];
-      width_before[it % 3] = dr - dl;
-      const double secant = (dl * sr - dr * sl) / (sr - sl);
-      double m = slow ? 0.5 * (dl + dr) : (it % 2 == 0 ? meet : secant);
-      const double pad = 0.25 * kLogLambdaWidth;
-      if (!std::isfinite(m)) m = 0.5 * (dl + dr);
-      m = std::min(std::max(m, dl + pad), dr - pad);
-      const Slope p = scaled_norm_and_slope(gamma, m);
-      record(m, p.norm);
-      if (!p.slope_ok) break;
-      if (p.slope < 0) {
-        dl = m, fl = std::log(p.norm), sl = p.slope;
-      } else {
-        dr = m, fr = std::log(p.norm), sr = p.slope;
-      }
-    }
-  }
-
-  // 2. Slope search not possible or not converged (a slope missing or of the wrong sign
-  //    at the bracket's ends, or the norm budget spent): golden-section search over the
-  //    whole bracket, which needs only the norm's unimodality.
-  if (!(best_f < 1.0) && !located) {
-    a = d0 - kLogLambdaHalfWidth;
-    b = d0 + kLogLambdaHalfWidth;
-    auto norm_at = [&](double d) {
-      const double f = scaled_norm(gamma, std::exp(d));
-      record(d, f);
-      return f;
-    };
-    double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
-    double f1 = norm_at(x1), f2 = norm_at(x2);
-    for (int it = 0; it < kGoldenSteps && !done(); ++it) {
-      if (f1 <= f2) {  // the minimum of the unimodal function is in [a, x2]
-        b = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = b - kInvPhi * (b - a);
-        f1 = norm_at(x1);
-      } else {
-        a = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = a + kInvPhi * (b - a);
-        f2 = norm_at(x2);
-      }
-    }
-  }
+  // 1. the slope search; 2. if it was not possible (a slope missing or of the wrong sign
+  // at the bracket's ends) or did not converge (the norm budget spent), golden section.
+  const bool located = slope_search(gamma, d0, best);
+  if (!(best.f < 1.0) && !located) golden_section_search(gamma, d0, best);
   // 3. Within the norms' accuracy of 1 the verdict depends on their rounding: decide it
   //    with one norm to 1e-13 at the best multiplier.
-  if (!(best_f < 1.0) && best_f < 1.0 + kFringe) {
-    const double f = scaled_hinf_norm(gamma, std::exp(best_d), kFineNormTolerance).norm;
-    if (f < best_f) best_f = f;
+  if (!(best.f < 1.0) && best.f < 1.0 + kFringe) {
+    const double f = scaled_hinf_norm(gamma, std::exp(best.d), kFineNormTolerance).norm;
+    if (f < best.f) best.f = f;
   }
   out.norm_evaluations = evaluations_ - evaluations_before;
-  out.lambda = std::exp(best_d);
-  out.scaled_norm = best_f;
-  out.feasible = best_f < 1.0;
+  out.lambda = std::exp(best.d);
+  out.scaled_norm = best.f;
+  out.feasible = best.f < 1.0;
   return out;
 }
 

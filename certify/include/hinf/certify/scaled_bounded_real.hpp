@@ -72,6 +72,19 @@ class ScaledBoundedReal {
   // ‖G_λ‖∞ at (γ, λ) to norm_tolerance, with its peak: the one place that scales B, C.
   hinf::certify::HinfNorm scaled_hinf_norm(double gamma, double lambda, double norm_tolerance);
   Slope scaled_norm_and_slope(double gamma, double log_lambda);
+  // The best multiplier d = log λ found so far and its norm.
+  struct Best {
+    double d = 0, f = INFINITY;
+    bool stop_when_feasible = true;
+    void record(double dd, double ff) {
+      if (ff < f) f = ff, d = dd;
+    }
+    bool done() const { return stop_when_feasible && f < 1.0; }
+  };
+  // The two searches of test(): over [d0 − w, d0 + w] (w = kLogLambdaHalfWidth).
+  // slope_search returns true when it located the minimum (or settled the verdict).
+  bool slope_search(double gamma, double d0, Best& best);
+  void golden_section_search(double gamma, double d0, Best& best);
 
   const hinf::Plant& plant_;
   hinf::StateSpace e_;
