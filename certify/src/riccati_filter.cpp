@@ -11,6 +11,7 @@
 #include "hinf/certify/riccati_filter.hpp"
 
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <sstream>
 
@@ -54,6 +55,49 @@ double min_eigenvalue(const Eigen::MatrixXd& S) {
   return es.eigenvalues()(0);
 }
 
+// The stabilising solution P of the DARE of docs/maths.md (56) (G of (55)), P = Q + A P (I + G P)⁻¹ Aᵀ,
+// from the stable deflating subspace [U₁; U₂] of the symplectic pencil (M, N): P U₁ = U₂.
+// Empty with `reason` set when there is none (eigenvalues on the unit circle, U₁
+// singular, or a numerically unsymmetric solution).
+std::optional<Eigen::MatrixXd> stabilising_dare_solution(const Eigen::MatrixXd& A, const Eigen::MatrixXd& G,
+                                                         const Eigen::MatrixXd& Q, std::string& reason) {
+  const Eigen::Index n = A.rows();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n), N = M;
+  M.topLeftCorner(n, n) = A.transpose();
+  M.bottomLeftCorner(n, n) = -Q;
+  M.bottomRightCorner(n, n).setIdentity();
+  N.topLeftCorner(n, n).setIdentity();
+  N.topRightCorner(n, n) = G;
+  N.bottomRightCorner(n, n) = A;
+  const detail::OrderedQz qz = detail::ordered_qz_stable_first(M, N);
+
+  double circle_distance = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < qz.beta.size(); ++i) {
+    if (qz.beta(i) == 0.0) continue;
+    circle_distance = std::min(circle_distance, std::abs(std::abs(qz.alpha(i)) / std::abs(qz.beta(i)) - 1.0));
+  }
+  if (qz.reordering_failed || qz.stable_count != n || circle_distance <= kDichotomyTolerance) {
+    std::ostringstream msg;
+    msg << "no stabilising solution: symplectic pencil has eigenvalues on the unit circle "
+        << "(distance " << circle_distance << ", " << qz.stable_count << " inside, need " << n << ")";
+    reason = msg.str();
+    return std::nullopt;
+  }
+  const Eigen::MatrixXd U1 = qz.Z.topLeftCorner(n, n), U2 = qz.Z.bottomLeftCorner(n, n);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> U1t_lu(U1.transpose());
+  if (n > 0 && !(U1t_lu.rcond() > kMinRcondU1)) {
+    reason = "no finite stabilising solution (U₁ singular, rcond " + std::to_string(U1t_lu.rcond()) + ")";
+    return std::nullopt;
+  }
+  const Eigen::MatrixXd X = U1t_lu.solve(U2.transpose()).transpose();  // X U₁ = U₂
+  const double X_norm = std::max(1.0, X.norm());
+  if ((X - X.transpose()).norm() > 1e-6 * X_norm) {
+    reason = "Riccati solution not symmetric to 1e-6 (numerically unreliable)";
+    return std::nullopt;
+  }
+  return Eigen::MatrixXd(0.5 * (X + X.transpose()));
+}
+
 }  // namespace
 
 HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
@@ -77,41 +121,9 @@ HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
   if (!kalman) G -= (L.transpose() * L) / (gamma * gamma);
   G = 0.5 * (G + G.transpose());
   const Eigen::MatrixXd Q = plant.B * plant.B.transpose();
-
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n), N = M;
-  M.topLeftCorner(n, n) = A.transpose();
-  M.bottomLeftCorner(n, n) = -Q;
-  M.bottomRightCorner(n, n).setIdentity();
-  N.topLeftCorner(n, n).setIdentity();
-  N.topRightCorner(n, n) = G;
-  N.bottomRightCorner(n, n) = A;
-  const detail::OrderedQz qz = detail::ordered_qz_stable_first(M, N);
-
-  double circle_distance = std::numeric_limits<double>::infinity();
-  for (Eigen::Index i = 0; i < qz.beta.size(); ++i) {
-    if (qz.beta(i) == 0.0) continue;
-    circle_distance = std::min(circle_distance, std::abs(std::abs(qz.alpha(i)) / std::abs(qz.beta(i)) - 1.0));
-  }
-  if (qz.reordering_failed || qz.stable_count != n || circle_distance <= kDichotomyTolerance) {
-    std::ostringstream msg;
-    msg << "no stabilising solution: symplectic pencil has eigenvalues on the unit circle "
-        << "(distance " << circle_distance << ", " << qz.stable_count << " inside, need " << n << ")";
-    out.reason = msg.str();
-    return out;
-  }
-  const Eigen::MatrixXd U1 = qz.Z.topLeftCorner(n, n), U2 = qz.Z.bottomLeftCorner(n, n);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> U1t_lu(U1.transpose());
-  if (n > 0 && !(U1t_lu.rcond() > kMinRcondU1)) {
-    out.reason = "no finite stabilising solution (U₁ singular, rcond " + std::to_string(U1t_lu.rcond()) + ")";
-    return out;
-  }
-  const Eigen::MatrixXd X = U1t_lu.solve(U2.transpose()).transpose();  // X U₁ = U₂
-  const double X_norm = std::max(1.0, X.norm());
-  if ((X - X.transpose()).norm() > 1e-6 * X_norm) {
-    out.reason = "Riccati solution not symmetric to 1e-6 (numerically unreliable)";
-    return out;
-  }
-  const Eigen::MatrixXd P = 0.5 * (X + X.transpose());
+  const std::optional<Eigen::MatrixXd> solution = stabilising_dare_solution(A, G, Q, out.reason);
+  if (!solution) return out;
+  const Eigen::MatrixXd& P = *solution;
   out.P = P;
 
   // Closed loop (I + G P)⁻¹ Aᵀ = (A (I + P G)⁻¹)ᵀ and the DARE residual.
