@@ -14,8 +14,9 @@ namespace {
 using Eigen::MatrixXd;
 namespace hill = hinf::models::hill;
 
-[[noreturn]] void fail(const std::string& message) {
-  throw Error(ErrorCode::InvalidInput, message);
+// Error(InvalidInput) "KEY<what>", naming the field by its key path (empty: no key).
+[[noreturn]] void fail(const std::string& key, const std::string& what) {
+  throw Error(ErrorCode::InvalidInput, key + what, key);
 }
 
 std::string dims(const MatrixXd& M) {
@@ -24,14 +25,14 @@ std::string dims(const MatrixXd& M) {
 
 void require_positive(const char* key, double v, const char* unit) {
   if (!std::isfinite(v) || !(v > 0))
-    fail(std::string(key) + " = " + number_text(v) + ": must be finite and > 0 (" + unit + ")");
+    fail(key, " = " + number_text(v) + ": must be finite and > 0 (" + unit + ")");
 }
 
 void require_finite_entries(const MatrixXd& M, const std::string& key) {
   for (Eigen::Index j = 0; j < M.cols(); ++j)
     for (Eigen::Index i = 0; i < M.rows(); ++i)
       if (!std::isfinite(M(i, j)))
-        fail(key + ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
+        fail(key, ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
              ") = " + number_text(M(i, j)) + " is not finite");
 }
 
@@ -60,9 +61,9 @@ hill::Matrix6 closed_loop_A(const HillPlantSpec& model, double omega) {
 
 MatrixXd hill_uncertainty_F(double delta, double delta_bar) {
   if (!std::isfinite(delta_bar) || !(delta_bar > 0))
-    fail("hill_uncertainty_F: delta_bar = " + number_text(delta_bar) + ": must be > 0");
+    fail("", "hill_uncertainty_F: delta_bar = " + number_text(delta_bar) + ": must be > 0");
   if (!std::isfinite(delta) || std::abs(delta) > delta_bar)
-    fail("hill_uncertainty_F: delta = " + number_text(delta) + ": must satisfy |delta| <= " +
+    fail("", "hill_uncertainty_F: delta = " + number_text(delta) + ": must satisfy |delta| <= " +
          number_text(delta_bar));
   return hinf::models::hill::uncertainty_F(delta, delta_bar);
 }
@@ -72,30 +73,30 @@ void validate_hill_model(const HillPlantSpec& model) {
   require_positive("hill.chaser_mass", model.chaser_mass, "kg");
   require_positive("hill.sample_time", model.sample_time, "s");
   if (!std::isfinite(model.delta_bar) || model.delta_bar < 0 || model.delta_bar >= 10)
-    fail("hill.delta_bar = " + number_text(model.delta_bar) +
+    fail("hill.delta_bar", " = " + number_text(model.delta_bar) +
          ": must be in [0, 10) (relative uncertainty of the orbital rate)");
 
   if (model.K.size() > 0 && (model.K.rows() != 3 || model.K.cols() != 6))
-    fail("hill.K: expected 3x6 (3 thrust axes x 6 states), got " + dims(model.K));
+    fail("hill.K", ": expected 3x6 (3 thrust axes x 6 states), got " + dims(model.K));
   require_finite_entries(model.K, "hill.K");
 
   if (model.B.rows() != 6 || model.B.cols() < 1)
-    fail("hill.B: expected 6 rows (the Hill state) and at least 1 column, got " + dims(model.B));
+    fail("hill.B", ": expected 6 rows (the Hill state) and at least 1 column, got " + dims(model.B));
   require_finite_entries(model.B, "hill.B");
 
   const MatrixXd C = measurement_matrix(model);
   if (C.cols() != 6 || C.rows() < 1)
-    fail("hill.C: expected 6 columns (the Hill state) and at least 1 row, got " + dims(C));
+    fail("hill.C", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(C));
   require_finite_entries(C, "hill.C");
 
   if (model.D.rows() != C.rows() || model.D.cols() < 1)
-    fail("hill.D: expected " + std::to_string(C.rows()) +
+    fail("hill.D", ": expected " + std::to_string(C.rows()) +
          " rows (m from hill.C) and at least 1 column, got " + dims(model.D));
   require_finite_entries(model.D, "hill.D");
 
   const MatrixXd L = estimated_signal_matrix(model);
   if (L.cols() != 6 || L.rows() < 1)
-    fail("hill.L: expected 6 columns (the Hill state) and at least 1 row, got " + dims(L));
+    fail("hill.L", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(L));
   require_finite_entries(L, "hill.L");
 }
 
@@ -124,7 +125,7 @@ Plant build_hill_plant(const HillPlantSpec& model) {
 MatrixXd hill_exact_discrete_A(const HillPlantSpec& model, double delta) {
   validate_hill_model(model);
   if (!std::isfinite(delta))
-    fail("hill_exact_discrete_A: delta = " + number_text(delta) + ": must be finite");
+    fail("", "hill_exact_discrete_A: delta = " + number_text(delta) + ": must be finite");
   const hill::Matrix6 Ac = closed_loop_A(model, model.orbital_rate * (1 + delta));
   return hill::discretise(Ac, hill::input_matrix(model.chaser_mass), model.sample_time, model.discretisation).A;
 }

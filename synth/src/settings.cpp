@@ -16,8 +16,8 @@ namespace {
 constexpr double kSolverTolerance = 1e-14;
 
 [[noreturn]] void fail(const char* field, const std::string& value, const std::string& why) {
-  throw Error(ErrorCode::InvalidInput,
-              std::string("solver.") + field + " = " + value + ": " + why);
+  const std::string key = std::string("solver.") + field;
+  throw Error(ErrorCode::InvalidInput, key + " = " + value + ": " + why, key);
 }
 
 void require_finite(const char* field, double v) {

@@ -10,8 +10,9 @@
 namespace hinf::synth {
 namespace {
 
-[[noreturn]] void fail(const std::string& message) {
-  throw Error(ErrorCode::InvalidInput, message);
+// Error(InvalidInput) "KEY<what>", naming the matrix by its key path.
+[[noreturn]] void fail(const std::string& key, const std::string& what) {
+  throw Error(ErrorCode::InvalidInput, key + what, key);
 }
 
 std::string dims(const Eigen::MatrixXd& M) {
@@ -20,20 +21,20 @@ std::string dims(const Eigen::MatrixXd& M) {
 
 void require_nonempty(const Eigen::MatrixXd& M, const std::string& name, const char* what) {
   if (M.rows() == 0 || M.cols() == 0)
-    fail(name + ": must not be empty (" + what + "), got " + dims(M));
+    fail(name, ": must not be empty (" + std::string(what) + "), got " + dims(M));
 }
 
 void require_rows(const Eigen::MatrixXd& M, const std::string& name, Eigen::Index rows,
                   const char* source) {
   if (M.rows() != rows)
-    fail(name + ": expected " + std::to_string(rows) + " rows (" + source + "), got " +
+    fail(name, ": expected " + std::to_string(rows) + " rows (" + source + "), got " +
          std::to_string(M.rows()));
 }
 
 void require_cols(const Eigen::MatrixXd& M, const std::string& name, Eigen::Index cols,
                   const char* source) {
   if (M.cols() != cols)
-    fail(name + ": expected " + std::to_string(cols) + " columns (" + source + "), got " +
+    fail(name, ": expected " + std::to_string(cols) + " columns (" + source + "), got " +
          std::to_string(M.cols()));
 }
 
@@ -41,7 +42,7 @@ void require_finite(const Eigen::MatrixXd& M, const std::string& name) {
   for (Eigen::Index j = 0; j < M.cols(); ++j)
     for (Eigen::Index i = 0; i < M.rows(); ++i)
       if (!std::isfinite(M(i, j)))
-        fail(name + ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
+        fail(name, ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
              ") = " + number_text(M(i, j)) + " is not finite");
 }
 
@@ -51,7 +52,7 @@ void validate_plant(const Plant& plant) {
   const Eigen::MatrixXd& A = plant.A;
   require_nonempty(A, "system.A", "n >= 1");
   if (A.rows() != A.cols())
-    fail("system.A: must be square (n x n), got " + dims(A));
+    fail("system.A", ": must be square (n x n), got " + dims(A));
   const Eigen::Index n = A.rows();
 
   require_rows(plant.B, "system.B", n, "n from A");
@@ -66,10 +67,10 @@ void validate_plant(const Plant& plant) {
   const bool has_H = plant.H.size() > 0;
   const bool has_E = plant.E.size() > 0;
   if (has_H && !has_E)
-    fail("uncertainty.H is given (" + dims(plant.H) + ") but uncertainty.E is empty: "
+    fail("uncertainty.H", " is given (" + dims(plant.H) + ") but uncertainty.E is empty: "
          "Delta A = H F E needs both");
   if (has_E && !has_H)
-    fail("uncertainty.E is given (" + dims(plant.E) + ") but uncertainty.H is empty: "
+    fail("uncertainty.E", " is given (" + dims(plant.E) + ") but uncertainty.H is empty: "
          "Delta A = H F E needs both");
   if (has_H) {
     require_rows(plant.H, "uncertainty.H", n, "n from A");

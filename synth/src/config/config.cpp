@@ -9,11 +9,11 @@
 namespace hinf::synth {
 namespace {
 
-// The node a message's leading key path ("hill.chaser_mass = ...", "system.B: ...") names,
-// so that errors found after reading (validate_plant, validate_hill_model,
-// Settings::validate) still carry a file:line:col.
-YAML::Node node_of_message(const YAML::Node& root, const std::string& message) {
-  const std::string path = message.substr(0, message.find_first_of(" :"));
+// The node a key path ("hill.chaser_mass", "system.B") names, or an undefined node, so
+// that errors found after reading (validate_plant, validate_hill_model,
+// Settings::validate) still carry a file:line:col. The checks name the key in
+// Error::key(); the message is never parsed.
+YAML::Node node_of_key(const YAML::Node& root, const std::string& path) {
   YAML::Node node = root;
   size_t start = 0;
   for (;;) {
@@ -28,17 +28,17 @@ YAML::Node node_of_message(const YAML::Node& root, const std::string& message) {
   }
 }
 
-// Runs a check that throws Error(InvalidInput) with a key-path message and prefixes
-// the message with the location of that key in the file.
+// Runs a check that throws Error(InvalidInput) naming a key and prefixes the message
+// with the location of that key in the file.
 template <typename Check>
 void located(const YamlReader& reader, const YAML::Node& root, Check&& check) {
   try {
     check();
   } catch (const Error& e) {
     if (e.code() != ErrorCode::InvalidInput) throw;
-    const YAML::Node at = node_of_message(root, e.what());
+    const YAML::Node at = node_of_key(root, e.key());
     throw Error(ErrorCode::InvalidInput,
-                (at ? reader.location(at) : reader.source()) + ": " + e.what());
+                (at ? reader.location(at) : reader.source()) + ": " + e.what(), e.key());
   }
 }
 

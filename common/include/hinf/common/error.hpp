@@ -5,6 +5,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace hinf {
 
@@ -23,13 +24,18 @@ int exit_code(ErrorCode code);
 
 // The applications turn it into a message and the exit code of its ErrorCode. Nothing
 // in the libraries aborts the process.
+// `key` optionally names the input that is wrong as a key path ("hill.chaser_mass"), so that
+// a reader can point at it in the file (file:line:col) without parsing the message.
 class Error : public std::runtime_error {
  public:
-  Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  Error(ErrorCode code, const std::string& message, std::string key = std::string())
+      : std::runtime_error(message), code_(code), key_(std::move(key)) {}
   ErrorCode code() const { return code_; }
+  const std::string& key() const { return key_; }
 
  private:
   ErrorCode code_;
+  std::string key_;
 };
 
 }  // namespace hinf
