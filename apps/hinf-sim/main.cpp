@@ -36,25 +36,102 @@ class ProgressBar {
   bool enabled_;
 };
 
-int run(int argc, char** argv) {
-  CLI::App app{"hinf-sim: nonlinear relative-navigation experiments comparing the H∞ filter, the paper's "
-               "published gains, EKFs and the REKF (docs/experiments.md)"};
+struct Options {
   std::string scenario_path, out_dir;
   long runs = 1;
   std::uint64_t seed = 1;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double duration = -1;
   bool no_plots = false, quiet = false, verbose = false;
-  app.add_option("scenario", scenario_path, "scenario file (YAML)")->required();
-  app.add_option("--out,-o", out_dir, "output directory (created if missing)")->required();
-  app.add_option("--runs", runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("scenario", o.scenario_path, "scenario file (YAML)")->required();
+  app.add_option("--out,-o", o.out_dir, "output directory (created if missing)")->required();
+  app.add_option("--runs", o.runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
       ->check(CLI::Range(1L, 1000000L));
-  app.add_option("--seed", seed, "base seed");
-  app.add_option("--jobs,-j", jobs, "parallel runs (default: hardware threads)")->check(CLI::Range(1, 4096));
-  app.add_option("--duration", duration, "override the scenario's duration (s)")->check(CLI::PositiveNumber);
-  app.add_flag("--no-plots", no_plots, "do not run gnuplot");
-  app.add_flag("--quiet,-q", quiet, "no progress bar");
-  app.add_flag("--verbose,-v", verbose, "report gains origin and synthesis progress");
+  app.add_option("--seed", o.seed, "base seed");
+  app.add_option("--jobs,-j", o.jobs, "parallel runs (default: hardware threads)")->check(CLI::Range(1, 4096));
+  app.add_option("--duration", o.duration, "override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
+  app.add_flag("--quiet,-q", o.quiet, "no progress bar");
+  app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
+}
+
+// --duration: a whole number of sample times; the steady-state window shrinks with it.
+void override_duration(hinf::sim::Scenario& s, double duration) {
+  if (!(duration > 0)) return;
+  const double ratio = duration / s.sample_time;
+  if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
+    throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                      "--duration " + std::to_string(duration) + ": must be a whole number of sample times");
+  s.duration = duration;
+  if (s.steady_state_start && *s.steady_state_start > duration) s.steady_state_start.reset();
+}
+
+// The scenario and the gains of its LTI filters (read or synthesised); the gains files
+// to write beside the run's outputs (file name, content). Throws hinf::Error.
+hinf::sim::RunSetup load_setup(const Options& o, hinf::sim::SummaryContext& context,
+                               std::vector<std::pair<std::string, std::string>>& gains_files) {
+  using namespace hinf::sim;
+  RunSetup setup;
+  setup.scenario = load_scenario(o.scenario_path);
+  Scenario& s = setup.scenario;
+  override_duration(s, o.duration);
+  for (const char* name : {"hinf", "published"}) {
+    const bool hinf = std::string(name) == "hinf";
+    const auto& src = hinf ? s.filters.hinf : s.filters.published;
+    if (!src) continue;
+    ObtainedGains g;
+    try {
+      g = obtain_gains(*src, o.verbose);
+    } catch (const hinf::Error& e) {  // name a synthesis as such; a gains file names itself
+      if (src->synthesize_path.empty()) throw;
+      throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());
+    }
+    // The sim feeds y = Cartesian position (m = 3) and reads the whole state (l = 6).
+    if (g.gains.B_F.cols() != 3 || g.gains.C_F.rows() != 6)
+      throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                        "filters." + std::string(name) + ": " + g.origin + ": B_F has " +
+                            std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
+                            std::to_string(g.gains.C_F.rows()) +
+                            " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
+    if (o.verbose) std::cerr << "hinf-sim: " << name << ": " << g.origin << "\n";
+    (hinf ? setup.hinf : setup.published) = g.gains;
+    context.gains[name] = {g.origin, g.gamma};
+    gains_files.emplace_back(hinf ? "gains.yaml" : "published_gains.yaml", g.gains_yaml);
+  }
+  return setup;
+}
+
+// The run's files, written together (hinf/common/atomic_file.hpp). Throws hinf::Error or
+// PlotError.
+void write_outputs(const Options& o, const hinf::sim::RunSetup& setup, const std::vector<hinf::sim::RunResult>& results,
+                   const hinf::sim::SummaryContext& context,
+                   const std::vector<std::pair<std::string, std::string>>& gains_files) {
+  using namespace hinf::sim;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(o.out_dir, ec);
+  if (ec || !fs::is_directory(o.out_dir))
+    throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                      "cannot create the output directory '" + o.out_dir + "': " + ec.message());
+  const Trajectory& trajectory = *results.front().trajectory;
+  hinf::AtomicFileSet outputs;
+  outputs.add((fs::path(o.out_dir) / "trajectory.csv").string(), format_trajectory_csv(trajectory));
+  for (const auto& [file, content] : gains_files) outputs.add((fs::path(o.out_dir) / file).string(), content);
+  outputs.add((fs::path(o.out_dir) / "runs.csv").string(), format_runs_csv(results));
+  outputs.add((fs::path(o.out_dir) / "summary.json").string(), format_summary_json(setup.scenario, results, context));
+  if (!o.no_plots && setup.scenario.plots)
+    write_plots(o.out_dir, trajectory, fs::path(o.scenario_path).stem().string(), outputs);
+  outputs.commit();
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"hinf-sim: nonlinear relative-navigation experiments comparing the H∞ filter, the paper's "
+               "published gains, EKFs and the REKF (docs/experiments.md)"};
+  Options o;
+  add_options(app, o);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -63,44 +140,13 @@ int run(int argc, char** argv) {
   }
 
   using namespace hinf::sim;
-  RunSetup setup;
   SummaryContext context;
-  context.scenario_path = scenario_path;
-  context.seed = seed;
+  context.scenario_path = o.scenario_path;
+  context.seed = o.seed;
   std::vector<std::pair<std::string, std::string>> gains_files;  // file name, content
+  RunSetup setup;
   try {
-    setup.scenario = load_scenario(scenario_path);
-    Scenario& s = setup.scenario;
-    if (duration > 0) {
-      const double ratio = duration / s.sample_time;
-      if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
-        throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                          "--duration " + std::to_string(duration) + ": must be a whole number of sample times");
-      s.duration = duration;
-      if (s.steady_state_start && *s.steady_state_start > duration) s.steady_state_start.reset();
-    }
-    for (const char* name : {"hinf", "published"}) {
-      const auto& src = std::string(name) == "hinf" ? s.filters.hinf : s.filters.published;
-      if (!src) continue;
-      ObtainedGains g;
-      try {
-        g = obtain_gains(*src, verbose);
-      } catch (const hinf::Error& e) {  // name a synthesis as such; a gains file names itself
-        if (src->synthesize_path.empty()) throw;
-        throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());
-      }
-      // The sim feeds y = Cartesian position (m = 3) and reads the whole state (l = 6).
-      if (g.gains.B_F.cols() != 3 || g.gains.C_F.rows() != 6)
-        throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                          "filters." + std::string(name) + ": " + g.origin + ": B_F has " +
-                              std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
-                              std::to_string(g.gains.C_F.rows()) +
-                              " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
-      if (verbose) std::cerr << "hinf-sim: " << name << ": " << g.origin << "\n";
-      (std::string(name) == "hinf" ? setup.hinf : setup.published) = g.gains;
-      context.gains[name] = {g.origin, g.gamma};
-      gains_files.emplace_back(std::string(name) == "hinf" ? "gains.yaml" : "published_gains.yaml", g.gains_yaml);
-    }
+    setup = load_setup(o, context, gains_files);
   } catch (const hinf::Error& e) {  // scenario, gains file, synthesis config or synthesis
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());
@@ -108,7 +154,7 @@ int run(int argc, char** argv) {
 
   std::vector<RunResult> results;
   try {
-    results = run_monte_carlo(setup, runs, seed, jobs, ProgressBar(!quiet && runs > 1));
+    results = run_monte_carlo(setup, o.runs, o.seed, o.jobs, ProgressBar(!o.quiet && o.runs > 1));
   } catch (const std::invalid_argument& e) {  // runtime filters refusing their gains/settings
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return kExitInvalid;
@@ -118,22 +164,7 @@ int run(int argc, char** argv) {
   }
 
   try {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec || !std::filesystem::is_directory(out_dir))
-      throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                        "cannot create the output directory '" + out_dir + "': " + ec.message());
-    namespace fs = std::filesystem;
-    const Trajectory& trajectory = *results.front().trajectory;
-    // One set: the run's files appear together or not at all.
-    hinf::AtomicFileSet outputs;
-    outputs.add((fs::path(out_dir) / "trajectory.csv").string(), format_trajectory_csv(trajectory));
-    for (const auto& [file, content] : gains_files) outputs.add((fs::path(out_dir) / file).string(), content);
-    outputs.add((fs::path(out_dir) / "runs.csv").string(), format_runs_csv(results));
-    outputs.add((fs::path(out_dir) / "summary.json").string(), format_summary_json(setup.scenario, results, context));
-    if (!no_plots && setup.scenario.plots)
-      write_plots(out_dir, trajectory, fs::path(scenario_path).stem().string(), outputs);
-    outputs.commit();
+    write_outputs(o, setup, results, context, gains_files);
   } catch (const hinf::Error& e) {
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return kExitInvalid;
