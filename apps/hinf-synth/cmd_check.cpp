@@ -4,12 +4,11 @@
 // filter is not unique, a golden filter whose transfer function differs is still
 // accepted when it remains certified for the config at the golden γ (within
 // min(rtol, 1e-6)): an equally optimal filter.
-#include <cmath>
 #include <iostream>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
-#include "hinf/certify/filter_compare.hpp"
+#include "hinf/synth/regression.hpp"
 
 namespace hinf::cli {
 
@@ -31,36 +30,26 @@ void add_check(CLI::App& app, Action& action) {
       if (!g.gamma)
         throw hinf::Error(hinf::ErrorCode::InvalidInput, *golden + ": golden file has no 'gamma'");
       const synth::SynthesisResult r = synth::synthesize(cfg.plant, cfg.settings);
-      const double dg = std::abs(r.gamma - *g.gamma) / std::abs(*g.gamma);
-      const hinf::certify::FilterDifference fd = hinf::certify::compare_filters(gf, r.filter);
-      const bool same_gamma = dg <= *rtol;
-      bool same_filter = fd.relative <= *rtol;
+      const synth::GoldenComparison cmp = synth::compare_with_golden(cfg, gf, *g.gamma, r, *rtol);
       std::string why;
-      if (!same_filter) {
-        // At the optimum the filter is not unique: rounding-level changes (another BLAS,
-        // compiler, platform) can move the synthesised filter along a flat direction of
-        // the bound. The golden filter is then still "the same" result if it is still
-        // certified, for this config, at the golden γ (within min(rtol, 1e-6)).
-        const double equal_tol = std::min(*rtol, 1e-6);
-        const synth::Certificate c =
-            synth::certify_filter(cfg.plant, gf, *g.gamma * (1 + equal_tol), cfg.settings);
-        same_filter = c.passed;
+      if (cmp.golden_recertified) {
+        const synth::Certificate& c = *cmp.golden_recertified;
         why = "        the golden filter on this config: nominal Hinf norm " + num(c.hinf_norm_nominal) +
               ", robust analysis LMI " +
               (c.robust_feasible_at_gamma ? "feasible" : "infeasible (best scaled norm " + num(c.robust_scaled_norm) + ")") +
               " at the golden gamma" +
-              (same_filter ? ": an equally optimal filter (the optimum is not unique)\n" : "\n");
+              (cmp.same_filter ? ": an equally optimal filter (the optimum is not unique)\n" : "\n");
       }
       std::cout << "gamma:  golden " << num(*g.gamma) << ", now " << num(r.gamma) << ", relative change "
-                << num(dg) << (same_gamma ? "  ok" : "  CHANGED") << "\n"
-                << "filter: ||F_golden - F_now||_inf / ||F_golden||_inf = " << num(fd.relative)
-                << " (transfer functions y -> z_F)" << (same_filter ? "  ok" : "  CHANGED") << "\n"
+                << num(cmp.gamma_relative_change) << (cmp.same_gamma ? "  ok" : "  CHANGED") << "\n"
+                << "filter: ||F_golden - F_now||_inf / ||F_golden||_inf = " << num(cmp.filter_difference.relative)
+                << " (transfer functions y -> z_F)" << (cmp.same_filter ? "  ok" : "  CHANGED") << "\n"
                 << why;
       if (!g.config_sha256.empty() && g.config_sha256 != cfg.sha256)
         std::cout << "note: the golden file was generated from a config with another sha256 ("
                   << g.config_sha256.substr(0, 12) << "... vs " << cfg.sha256.substr(0, 12) << "...)\n";
-      std::cout << (same_gamma && same_filter ? "same (rtol " + num(*rtol) + ")\n" : "CHANGED (rtol " + num(*rtol) + ")\n");
-      return same_gamma && same_filter ? 0 : 1;
+      std::cout << (cmp.same() ? "same (rtol " + num(*rtol) + ")\n" : "CHANGED (rtol " + num(*rtol) + ")\n");
+      return cmp.same() ? 0 : 1;
     };
   });
 }
