@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "hinf/sim/two_body.hpp"
+#include "hinf/sim/vectors.hpp"
 
 namespace {
 

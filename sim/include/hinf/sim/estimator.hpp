@@ -15,7 +15,7 @@
 #include <string>
 
 #include "hinf/sim/scenario.hpp"
-#include "hinf/sim/two_body.hpp"
+#include "hinf/sim/vectors.hpp"
 
 namespace hinf::sim {
 

@@ -10,7 +10,7 @@
 #include "hinf/sim/estimator.hpp"
 #include "hinf/sim/metrics.hpp"
 #include "hinf/sim/scenario.hpp"
-#include "hinf/sim/two_body.hpp"
+#include "hinf/sim/vectors.hpp"
 
 namespace hinf::sim {
 
