@@ -1,7 +1,6 @@
 // The synthesis pipeline (docs/maths.md §2.5–§7): pre-flight checks, Theorem 1 /
 // Corollary 1 by the barrier method, recovery (22), and the independent certificate.
 #include <cmath>
-#include <sstream>
 
 #include "hinf/common/number_text.hpp"
 #include "hinf/synth/validate_plant.hpp"
