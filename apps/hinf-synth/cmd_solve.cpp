@@ -24,9 +24,15 @@ void add_solve(CLI::App& app, Action& action) {
       const synth::SynthesisResult r =
           v ? synth::synthesize(cfg.plant, cfg.settings, IterationTable())
             : synth::synthesize(cfg.plant, cfg.settings);
-      if (v)
-        std::fprintf(stderr, "LMI order %d, %d variables, H/E balance s = %.6g (H <- sH, E <- E/s)\n",
-                     r.solver.lmi_order, r.solver.variables, r.solver.he_balance);
+      if (v) {
+        std::fprintf(stderr, "LMI order %d, %d variables; scaling applied (powers of two, exact): %s\n",
+                     r.solver.lmi_order, r.solver.variables, r.solver.scaling.c_str());
+        if (r.solver.gap_certified)
+          std::fprintf(stderr, "optimality gap certified by a dual point: gamma*^2 in [%.10g, %.10g]\n",
+                       r.solver.dual_bound_gamma_squared, r.solver.optimal_gamma * r.solver.optimal_gamma);
+        else
+          std::fprintf(stderr, "optimality gap not certified: %s\n", r.solver.gap_detail.c_str());
+      }
       hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256}));
       std::cout << "gamma = " << num(r.gamma) << " (nominal Hinf norm " << num(r.certificate.hinf_norm_nominal)
                 << ", robust bound " << num(r.certificate.robust_bound) << "), certified; gains written to "

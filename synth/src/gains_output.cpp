@@ -73,12 +73,17 @@ void emit_solver(YAML::Emitter& out, const SolverInfo& s) {
   kv(out, "phase1_iterations", s.phase1_iterations);
   kv(out, "centerings", s.centerings);
   kv(out, "optimal_gamma", s.optimal_gamma);
-  kv(out, "relative_gap", s.relative_gap);
-  kv(out, "lower_bound_gamma_squared", s.dual_bound_gamma_squared);
+  kv(out, "gap_certified", s.gap_certified);
+  if (s.gap_certified) {
+    kv(out, "relative_gap", s.relative_gap);
+    kv(out, "lower_bound_gamma_squared", s.dual_bound_gamma_squared);
+  } else {
+    kv(out, "gap_not_certified_because", s.gap_detail);
+  }
   kv(out, "lmi_order", s.lmi_order);
   kv(out, "variables", s.variables);
   kv(out, "lmi_margin", s.lmi_margin);
-  kv(out, "he_balance", s.he_balance);
+  kv(out, "scaling", s.scaling);
   out << YAML::EndMap;
   out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
   kv(out, "solve_time_s", s.time_s);

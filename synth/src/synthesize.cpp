@@ -11,7 +11,10 @@
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/stability.hpp"
+#include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "hinf/sdp/dual_bound.hpp"
+#include "hinf/certify/balance.hpp"
 #include "theorem1.hpp"
 
 namespace hinf::synth {
@@ -25,9 +28,19 @@ std::string fmt(double v) { return hinf::significant_text(v, 10); }
 
 // Pre-flight (docs/maths.md [D10]): the error system contains the plant state, so the plant
 // must be Schur stable for every admissible F (docs/maths.md §2.5). Name the offending mode.
+// The plant is the scaled one; its eigenvalues are computed balanced (docs/maths.md §4.4).
 void preflight(const Plant& plant, const Settings& settings) {
-  const Eigen::EigenSolver<MatrixXd> es(plant.A, false);
-  const Eigen::VectorXcd ev = es.eigenvalues();
+  // γ* = 0 (docs/maths.md §2.4): without process noise the state stays at 0, without an
+  // estimated output there is nothing to estimate — the zero filter is exact, and Theorem 1
+  // has no strictly feasible point with g > 0 that the solver could approach.
+  if (plant.B.isZero(0.0))
+    throw Error(ErrorCode::Infeasible,
+                "ill-posed: system.B is zero, so the state is never excited and the optimal bound is γ* = 0 "
+                "(the zero filter is exact); nothing to synthesise");
+  if (plant.L.isZero(0.0))
+    throw Error(ErrorCode::Infeasible,
+                "ill-posed: system.L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
+  const Eigen::VectorXcd ev = certify::balanced_eigenvalues(plant.A);
   int worst = 0;
   for (int i = 1; i < ev.size(); ++i)
     if (std::abs(ev(i)) > std::abs(ev(worst))) worst = i;
@@ -75,15 +88,16 @@ ErrorCode error_code_for(sdp::Status status) {
 // The robust analysis LMI docs/maths.md (50) (Lemma 1 with the S-procedure) for a fixed filter,
 // minimising γ² by the barrier method (`analyze`; the certificate uses the bounded-real
 // form of the same LMI instead, certify/scaled_bounded_real.hpp). Returns γ².
-double solve_analysis(const Plant& plant, const Filter& filter, const Settings& settings) {
-  AnalysisLmi A = build_analysis_lmi(plant, filter, he_balance(plant));
+double solve_analysis(const Plant& user_plant, const Filter& user, const Settings& settings) {
+  const PlantScaling sc = choose_scaling(user_plant);
+  const AnalysisLmi A = build_analysis_lmi(scaled_plant(user_plant, sc), scaled_filter(user, sc));
   const VectorXd c = A.lmi.cost_of(A.g);
   const sdp::Solution sol = sdp::minimize_linear(A.lmi, c, solver_options(settings));
   if (sol.status != sdp::Status::Solved)
     throw Error(error_code_for(sol.status), "robust analysis LMI (docs/maths.md (50)): " +
                                                 std::string(sdp::status_message(sol.status)) +
                                                 (sol.detail.empty() ? "" : ": " + sol.detail));
-  return sol.objective;
+  return sol.objective / (sc.gamma_factor() * sc.gamma_factor());
 }
 
 }  // namespace
@@ -96,6 +110,7 @@ double robust_bound(const Plant& plant, const Filter& filter, const Settings& se
 
 namespace {
 // Checks 2–4 (docs/maths.md §7.2–§7.4) at γ; none uses the synthesis solver's numbers (§7).
+// Plant, filter and γ are the scaled ones (an exact change of units, docs/maths.md (112)).
 Certificate certify(const Plant& plant, const Filter& filter, double gamma, const Settings& settings) {
   Certificate c;
   c.gamma = gamma;
@@ -128,13 +143,30 @@ Certificate certify(const Plant& plant, const Filter& filter, double gamma, cons
   c.passed = c.schur_stable && c.hinf_norm_ok && c.robust_feasible_at_gamma;
   return c;
 }
+
+// The certificate's numbers in the user's units (docs/maths.md (112)): norms and bounds
+// divided by σ_in·σ_z, λ by (s·σ_z)²; spectral radii and ‖G_λ‖∞ are invariant. The LMI
+// check and the recovery's conditioning stay those of the scaled (congruent) LMI.
+Certificate in_user_units(Certificate c, const PlantScaling& s, const Filter& user) {
+  const double f = s.gamma_factor(), ls = s.uncertainty * s.output;
+  c.gamma /= f;
+  c.hinf_norm_nominal /= f;
+  c.robust_bound /= f;
+  c.robust_multiplier /= ls * ls;
+  c.norm_A_F = user.A_F.norm();
+  c.norm_B_F = user.B_F.norm();
+  c.norm_C_F = user.C_F.norm();
+  return c;
+}
 }  // namespace
 
 Certificate certify_filter(const Plant& plant, const Filter& filter, double gamma,
                            const Settings& settings) {
   validate_plant(plant);
   settings.validate();
-  return certify(plant, filter, gamma, settings);
+  const PlantScaling sc = choose_scaling(plant);
+  const Certificate c = certify(scaled_plant(plant, sc), scaled_filter(filter, sc), gamma * sc.gamma_factor(), settings);
+  return in_user_units(c, sc, filter);
 }
 
 namespace {
@@ -225,33 +257,57 @@ std::string failed_checks(const Certificate& cert, double gamma) {
 
 }  // namespace
 
-SynthesisResult synthesize(const Plant& plant, const Settings& settings, const IterationObserver& observer) {
-  validate_plant(plant);
+namespace {
+// The optimality bracket of the user's problem (docs/maths.md §5.9): a lower bound on γ*²
+// of the strict LMI (18) from a verified dual point, in the user's units (exact: ÷ 2^2k).
+void record_bracket(const Theorem1Lmi& T, const Plant& scaled, const sdp::Solution& sol, const Settings& settings,
+                    double f, SolverInfo& info) {
+  const sdp::DualBound b = sdp::verified_bracket(T.lmi, T.lmi.cost_of(T.g), sol.x, settings.lmi_margin,
+                                                 theorem1_basis_error(T, scaled), sol.x_interior);
+  info.gap_certified = b.verified && b.upper_verified;
+  info.gap_detail = b.verified ? (b.upper_verified ? "" : "the solution point is not verifiably strictly feasible")
+                               : b.detail;
+  if (!info.gap_certified) return;
+  info.dual_bound_gamma_squared = b.lower_bound / (f * f);
+  info.relative_gap = (b.upper_bound - b.lower_bound) / b.upper_bound;
+}
+
+SolverInfo solver_info(const sdp::Solution& sol, const Theorem1Lmi& T, const PlantScaling& sc,
+                       const Settings& settings) {
+  SolverInfo info;
+  info.status = sol.status;
+  info.newton_iterations = sol.newton_total;
+  info.phase1_iterations = sol.newton_phase1;
+  info.centerings = sol.centerings;
+  info.scaling = sc.summary();
+  info.lmi_margin = settings.lmi_margin;
+  info.time_s = sol.elapsed_s;
+  info.lmi_order = T.lmi.order();
+  info.variables = T.lmi.num_params();
+  info.optimal_gamma = std::sqrt(sol.objective) / sc.gamma_factor();
+  return info;
+}
+}  // namespace
+
+// Every step runs on the scaled plant (docs/maths.md §4.4), an exact change of units; the
+// filter and every reported number are mapped back to the user's units at the end.
+SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, const IterationObserver& observer) {
+  validate_plant(user_plant);
   settings.validate();
+  const PlantScaling sc = choose_scaling(user_plant);
+  const Plant plant = scaled_plant(user_plant, sc);
   preflight(plant, settings);
 
-  const double s = he_balance(plant);
-  const Theorem1Lmi T = build_theorem1(plant, s);
+  const Theorem1Lmi T = build_theorem1(plant);
   const sdp::Solution sol = solve_corollary1(T, settings, observer);
-
   SynthesisResult res;
-  res.solver.status = sol.status;
-  res.solver.newton_iterations = sol.newton_total;
-  res.solver.phase1_iterations = sol.newton_phase1;
-  res.solver.centerings = sol.centerings;
-  res.solver.relative_gap = sol.relative_gap;
-  res.solver.dual_bound_gamma_squared = sol.objective - sol.gap;
-  res.solver.he_balance = s;
-  res.solver.lmi_margin = settings.lmi_margin;
-  res.solver.time_s = sol.elapsed_s;
-  res.solver.lmi_order = T.lmi.order();
-  res.solver.variables = T.lmi.num_params();
-  res.solver.optimal_gamma = std::sqrt(sol.objective);
+  res.solver = solver_info(sol, T, sc, settings);
+  record_bracket(T, plant, sol, settings, sc.gamma_factor(), res.solver);
 
   certify::Theorem1Point pt;
   if (settings.gamma_backoff > 0) {
     const double gamma2_backoff = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
-    const Theorem1Lmi Tb = build_theorem1_backoff(plant, s, gamma2_backoff);
+    const Theorem1Lmi Tb = build_theorem1_backoff(plant, gamma2_backoff);
     const sdp::Solution sb = solve_backoff(Tb, gamma2_backoff, settings, observer);
     res.solver.newton_iterations += sb.newton_total;
     res.solver.time_s += sb.elapsed_s;
@@ -264,6 +320,11 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings, const I
   if (!res.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "certificate failed, no filter written:" + failed_checks(res.certificate, res.gamma));
+  const double f = sc.gamma_factor();
+  res.filter = user_filter(res.filter, sc);
+  res.certificate = in_user_units(res.certificate, sc, res.filter);
+  res.gamma /= f;
+  res.gamma_squared /= f * f;
   return res;
 }
 
@@ -273,11 +334,12 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings) {
 
 std::string theorem1_sdpa(const Plant& plant, const std::string& comment) {
   validate_plant(plant);
-  const double s = he_balance(plant);
-  Theorem1Lmi T = build_theorem1(plant, s);
+  // the user's own problem (γ² is the objective), with only the H/E split of (24)
+  const PlantScaling sc = uncertainty_split(plant);
+  const Theorem1Lmi T = build_theorem1(scaled_plant(plant, sc));
   const VectorXd c = T.lmi.cost_of(T.g);
   return lmi::to_sdpa_sparse(T.lmi, c, comment + "\nvariable " + std::to_string(T.lmi.variable(T.g).offset + 1) +
-                                           " is gamma^2; H/E balance s = " + std::to_string(s));
+                                           " is gamma^2; " + sc.summary());
 }
 
 }  // namespace hinf::synth

@@ -1,6 +1,7 @@
 #include "theorem1.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "hinf/common/error.hpp"
 
@@ -10,22 +11,14 @@ using Eigen::MatrixXd;
 using hinf::Filter;
 using hinf::Plant;
 
-double he_balance(const Plant& plant) {
-  if (!plant.uncertain()) return 1.0;
-  const double h = plant.H.norm(), e = plant.E.norm();
-  if (!(h > 0) || !(e > 0)) return 1.0;
-  return std::sqrt(e / h);
-}
-
 namespace {
-Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
+Theorem1Lmi build(const Plant& P, const double* g_fixed) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
   const bool unc = P.uncertain();
   std::vector<int> blocks{n, n, n, n, p, q, l};
   if (unc) blocks.push_back(P.j());
   Theorem1Lmi T;
   T.lmi = lmi::LmiProblem(blocks);
-  T.he_scale = s;
   auto& M = T.lmi;  // M(x), docs/maths.md (18)
   T.R = M.add_symmetric("R", n);
   T.S = M.add_symmetric("S", n);
@@ -37,7 +30,8 @@ Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
   else T.margin = M.add_scalar("margin");
 
   const MatrixXd In = MatrixXd::Identity(n, n);
-  const MatrixXd Hs = s * P.H, Es = P.E / s;
+  const MatrixXd& Hs = P.H;
+  const MatrixXd& Es = P.E;
   // row 1:  [ −R  −S  RA+B̄_F C  Ā_F  RB  B̄_F D  0  RH ]
   M.add_term(0, 0, T.R, -In, In);
   M.add_term(0, 1, T.S, -In, In);
@@ -79,10 +73,20 @@ Theorem1Lmi build(const Plant& P, double s, const double* g_fixed) {
 }
 }  // namespace
 
-Theorem1Lmi build_theorem1(const Plant& P, double s) { return build(P, s, nullptr); }
+Theorem1Lmi build_theorem1(const Plant& P) { return build(P, nullptr); }
 
-Theorem1Lmi build_theorem1_backoff(const Plant& P, double s, double g_fixed) {
-  return build(P, s, &g_fixed);
+Theorem1Lmi build_theorem1_backoff(const Plant& P, double g_fixed) { return build(P, &g_fixed); }
+
+std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const Plant& plant) {
+  std::vector<lmi::SparseEntry> err;
+  if (!plant.uncertain()) return err;
+  const double u = std::numeric_limits<double>::epsilon() / 2, k = plant.k() + 1;
+  const MatrixXd bound = k * u / (1 - k * u) * (1 + 4 * u) * (plant.E.cwiseAbs().transpose() * plant.E.cwiseAbs());
+  const int param = T.lmi.variable(T.lambda).offset, off = T.lmi.block_offset(2);
+  for (int c = 0; c < plant.n(); ++c)
+    for (int r = 0; r <= c; ++r)
+      if (bound(r, c) > 0) err.push_back({param, off + r, off + c, bound(r, c)});
+  return err;
 }
 
 certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, const Eigen::VectorXd& x,
@@ -93,7 +97,7 @@ certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, 
   pt.AF_bar = T.lmi.value(T.AFbar, x);
   pt.BF_bar = T.lmi.value(T.BFbar, x);
   pt.CF_bar = T.lmi.value(T.CFbar, x);
-  pt.lambda = plant.uncertain() ? x(T.lmi.variable(T.lambda).offset) / (T.he_scale * T.he_scale) : 0.0;
+  pt.lambda = plant.uncertain() ? x(T.lmi.variable(T.lambda).offset) : 0.0;
   pt.g = g;
   return pt;
 }
@@ -105,7 +109,7 @@ Filter recover_filter(const certify::Theorem1Point& pt) {
   return Filter{S.solve(pt.AF_bar), S.solve(pt.BF_bar), pt.CF_bar};
 }
 
-AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
+AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
   const int n2 = 2 * n;
@@ -123,7 +127,6 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
   if (unc) blocks.push_back(P.j());
   AnalysisLmi A;
   A.lmi = lmi::LmiProblem(blocks);
-  A.he_scale = s;
   auto& M = A.lmi;  // M(x), docs/maths.md (50)
   A.P = M.add_symmetric("P", n2);
   if (unc) A.lambda = M.add_scalar("lambda");
@@ -138,9 +141,9 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F, double s) {
   M.add_constant(3, 3, -MatrixXd::Identity(l, l));
   if (unc) {
     MatrixXd Hb = MatrixXd::Zero(n2, P.j());
-    Hb.topRows(n) = s * P.H;
+    Hb.topRows(n) = P.H;
     MatrixXd Eb = MatrixXd::Zero(P.k(), n2);
-    Eb.leftCols(n) = P.E / s;
+    Eb.leftCols(n) = P.E;
     M.add_term(0, 4, A.P, I2, Hb);
     M.add_scalar_term(1, 1, A.lambda, Eb.transpose() * Eb);
     M.add_scalar_term(4, 4, A.lambda, -MatrixXd::Identity(P.j(), P.j()));

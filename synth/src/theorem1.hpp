@@ -8,26 +8,26 @@
 
 namespace hinf::synth {
 
-// H/E balance: s with ‖sH‖ = ‖E/s‖ (docs/maths.md (24): leaves ΔA = HFE unchanged).
-// 1 if no uncertainty.
-double he_balance(const hinf::Plant& plant);
-
 struct Theorem1Lmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
   lmi::VarId R, S, AFbar, BFbar, CFbar, lambda, g;  // lambda invalid without uncertainty
   lmi::VarId margin;  // only in the γ back-off problem (g fixed): M(x) ⪯ margin·I
-  double he_scale = 1;  // the LMI uses H' = sH, E' = E/s, λ' = λ s²
 };
 
-// Blocks n, n, n, n, p, q, l, j (the last only with uncertainty).
-Theorem1Lmi build_theorem1(const hinf::Plant& plant, double he_scale);
+// Blocks n, n, n, n, p, q, l, j (the last only with uncertainty). The plant is the scaled
+// one (plant_scaling.hpp); the LMI is written for it as it is.
+Theorem1Lmi build_theorem1(const hinf::Plant& plant);
 
 // The γ back-off problem (docs/maths.md (44), [D6]): g = γ_b² fixed, and a scalar `margin` with
 // M(x) ⪯ margin·I on every block; minimising `margin` maximises the LMI's margin.
-Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double he_scale, double g_fixed);
+Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double g_fixed);
 
-// The Theorem-1 variables at a solution x of T's LMI, in the user's units (λ = λ'/s²),
-// with g = γ² (fixed in the back-off problem, the objective otherwise).
+// Entrywise bounds on |Mᵢ − M̂ᵢ| between LMI (18) and the stored one: only λ's EᵀE (block
+// (3,3)) is a rounded product, |fl(EᵀE) − EᵀE| ≤ γ_k|E|ᵀ|E|; for sdp::verified_bracket.
+std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const hinf::Plant& plant);
+
+// The Theorem-1 variables at a solution x of T's LMI, with g = γ² (fixed in the back-off
+// problem, the objective otherwise).
 certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const hinf::Plant& plant,
                                       const Eigen::VectorXd& x, double g);
 
@@ -38,7 +38,6 @@ hinf::Filter recover_filter(const certify::Theorem1Point& pt);
 struct AnalysisLmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
   lmi::VarId P, lambda, g;
-  double he_scale = 1;
 };
 
 // Blocks 2n, 2n, p+q, l, j (docs/maths.md (50)):
@@ -48,7 +47,6 @@ struct AnalysisLmi {
 //   [  ∗   ∗          ∗    −I    0   ]
 //   [  ∗   ∗          ∗     ∗   −λI  ]
 // with the error system of docs/maths.md (9)–(11), H̄ = [H; 0], Ē = [E, 0].
-AnalysisLmi build_analysis_lmi(const hinf::Plant& plant, const hinf::Filter& filter,
-                               double he_scale);
+AnalysisLmi build_analysis_lmi(const hinf::Plant& plant, const hinf::Filter& filter);
 
 }  // namespace hinf::synth

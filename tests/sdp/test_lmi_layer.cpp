@@ -25,6 +25,7 @@
 #include "hinf/lmi/lmi_problem.hpp"
 #include "random_plants.hpp"
 #include "theorem1.hpp"
+#include "hinf/synth/plant_scaling.hpp"
 
 namespace {
 
@@ -211,8 +212,7 @@ TEST(LmiLayer, Theorem1GradientHessianMatchDenseTraces) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " p=" << d.p << " m=" << d.m << " q=" << d.q
                                     << " l=" << d.l << " j=" << d.j << " k=" << d.k);
     const Plant P = random_plant_with_dimensions(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
-    const double s = hinf::synth::he_balance(P);
-    const auto T = hinf::synth::build_theorem1(P, s);
+    const auto T = hinf::synth::build_theorem1(P);
     const int expected_vars = d.n * (d.n + 1) + d.n * d.n + d.n * d.m + d.l * d.n + 1 + (d.j > 0 ? 1 : 0);
     EXPECT_EQ(T.lmi.num_params(), expected_vars);
     EXPECT_EQ(T.lmi.order(), 4 * d.n + d.p + d.q + d.l + d.j);
@@ -264,12 +264,15 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
     SCOPED_TRACE(testing::Message() << "n=" << d.n << " j=" << d.j);
     const Plant P = random_plant_with_dimensions(g, d.n, d.p, d.m, d.q, d.l, d.j, d.k);
     const bool unc = d.j > 0;
-    const double s = hinf::synth::he_balance(P);
-    if (unc) {  // the balance equalises ‖sH‖_F and ‖E/s‖_F (docs/maths.md (24))
-      EXPECT_NEAR((s * P.H).norm(), (P.E / s).norm(), 1e-12 * (s * P.H).norm());
-      EXPECT_NE(s, 1.0);
+    const hinf::synth::PlantScaling sc = hinf::synth::uncertainty_split(P);
+    const double s = sc.uncertainty;
+    if (unc) {  // the split brings ‖sH‖_F and ‖E/s‖_F within a factor 2 (docs/maths.md (24))
+      const double ratio = (s * P.H).norm() / (P.E / s).norm();
+      EXPECT_LE(ratio, 2.0);
+      EXPECT_GE(ratio, 0.5);
+      EXPECT_EQ(s, std::ldexp(1.0, std::ilogb(s))) << "a power of two";
     }
-    const auto T = hinf::synth::build_theorem1(P, s);
+    const auto T = hinf::synth::build_theorem1(hinf::synth::scaled_plant(P, sc));
     for (int trial = 0; trial < 4; ++trial) {
       const VectorXd x = rnd_vec(g, T.lmi.num_params());
       hinf::certify::Theorem1Point pt;
@@ -365,7 +368,7 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
 TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
   std::mt19937 g(23);
   const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T1 = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  const auto T1 = hinf::synth::build_theorem1(P);
   const LmiProblem& L = T1.lmi;
   const int N = L.order(), np = L.num_params();
   const MatrixXd T = random_matrix(g, N, N);
@@ -387,7 +390,7 @@ TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
 TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
   std::mt19937 g(29);
   const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P);
   const VectorXd c = T.lmi.cost_of(T.g);
   hinf::sdp::Options st;
   st.relative_gap_tol = 10.0;  // first phase-II centring: a well-conditioned point
@@ -424,7 +427,7 @@ VectorXd phase1_point(const hinf::synth::Theorem1Lmi& T, std::mt19937& g, double
 TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase1) {
   std::mt19937 g(17);
   const Plant P = random_plant_with_dimensions(g, 4, 1, 2, 2, 3, 2, 1);
-  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P);
   hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   b.set_t(2.0);
   const VectorXd z = phase1_point(T, g, 0.5);
@@ -456,7 +459,7 @@ void expect_checker_clean(const std::string& out) {
 TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
   std::mt19937 g(15);
   const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P);
   hinf::sdp::LogDetBarrier b(T.lmi, T.lmi.cost_of(T.g), 1e-9, 1e8, /*phase1=*/true);
   // small t: Ipopt's forward differences (step 1e-7) lose u·|f|/1e-7 to round-off,
   // so |f| = |t·s − log det …| must stay small next to its tolerance 1e-5
@@ -478,7 +481,7 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase1) {
 TEST(LmiLayer, IpoptDerivativeCheckerPhase2) {
   std::mt19937 g(15);
   const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
-  const auto T = hinf::synth::build_theorem1(P, hinf::synth::he_balance(P));
+  const auto T = hinf::synth::build_theorem1(P);
   const int np = T.lmi.num_params();
   const VectorXd c = T.lmi.cost_of(T.g);
   hinf::sdp::Options st;

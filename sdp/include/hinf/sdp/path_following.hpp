@@ -17,7 +17,7 @@ namespace hinf::sdp {
 // The solver's own options (as Ceres's Minimizer::Options), built by the caller from its
 // settings; each field's meaning and default is documented here once.
 struct Options {
-  double lmi_margin = 1e-9;              // ε: the solver enforces −M(x) ⪰ ε·I
+  double lmi_margin = 1e-11;             // ε: the solver enforces −M(x) ⪰ ε·I
   double relative_gap_tol = 1e-7;        // stop when the certified gap ≤ this·|cᵀx|
   double barrier_growth = 50.0;          // μ: t grows by at most this factor per centring
   double feasibility_radius = 1e8;       // ρ: the ball ‖x‖ < ρ that bounds the barrier
@@ -49,6 +49,9 @@ struct Solution {
   double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (42))
   double relative_gap = 0;       // gap/|cᵀx|
   double dual_bound = 0;         // tr(W M₀)/t with the margin removed: ≈ lower bound on p*
+  // The first centred point of phase II (small t, far inside): its dual point is strictly
+  // interior, for the verified bracket (dual_bound.hpp). Size 0 if phase II never centred.
+  Eigen::VectorXd x_interior;
   double elapsed_s = 0;
 };
 

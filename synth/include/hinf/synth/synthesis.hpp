@@ -16,7 +16,8 @@ namespace hinf::synth {
 // Results of the independent checks of docs/maths.md §7 (none reuses the solver's numbers).
 struct Certificate {
   double gamma = 0;                       // the bound being certified
-  // check 1: LMI docs/maths.md (18) at the returned point, assembled densely, in user units
+  // check 1: LMI docs/maths.md (18) at the returned point, assembled densely, on the scaled
+  // plant (congruent to the user's LMI, docs/maths.md §4.4)
   double lmi_max_eig = 0;                 // largest eigenvalue of M(x) (must be < 0)
   double lmi_max_eig_relative = 0;        // ... divided by ‖M(x)‖₂
   bool lmi_negative_definite = false;     // Cholesky of −M(x) − margin·I succeeded
@@ -49,10 +50,14 @@ struct SolverInfo {
   int newton_iterations = 0;       // Ipopt iterations, phase I + II
   int phase1_iterations = 0;
   int centerings = 0;              // outer barrier steps
-  double relative_gap = 0;         // (N+1)/(t·γ²) at exit
-  double dual_bound_gamma_squared = 0;  // lower bound on γ*² from W/t
-  double he_balance = 1;           // s with H ← sH, E ← E/s
-  double lmi_margin = 0;           // margin enforced (equilibrated problem)
+  // the optimality bracket (docs/maths.md §5.9), when verified: γ*² of the strict LMI (18)
+  // lies in [dual_bound_gamma_squared, optimal_gamma²]
+  bool gap_certified = false;
+  std::string gap_detail;          // why not, when not
+  double relative_gap = 0;         // (optimal γ² − lower bound)/optimal γ² (if certified)
+  double dual_bound_gamma_squared = 0;  // verified lower bound on γ*², user's units
+  std::string scaling;             // PlantScaling::summary() of the scaling applied
+  double lmi_margin = 0;           // ε of M(x) ⪯ −εI, on the scaled LMI
   double optimal_gamma = 0;        // √(optimal γ²) of Corollary 1, before back-off/certification
   double time_s = 0;
   int lmi_order = 0;               // N
