@@ -38,9 +38,9 @@ constexpr double kMaxStep = 0.9;
 // by, so it is moved inside the cone by η (relative, in the Jacobi scaling) at a cost of
 // about η·N relative in the bound.
 constexpr double kInteriorShifts[] = {1e-13, 1e-12, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6};
-// Shifted candidates that may build their own projection metric (one QR of an
-// N(N+1)/2 × p matrix each, the dominant cost at large n).
-constexpr int kFreshMetrics = 4;
+// Projection metrics built beyond the first (one QR of an N(N+1)/2 × p matrix each, the
+// dominant cost at large n) when the first does not verify.
+constexpr int kFreshMetrics = 6;
 // Weights θ of the early dual point in (1 − θ)·Z_final + θ·Z_early, tried in turn.
 constexpr double kInteriorWeights[] = {1e-12, 1e-10, 1e-8, 1e-6, 1e-4};
 
@@ -336,11 +336,15 @@ bool verify_dual(const lmi::LmiProblem& lmi, const SparseBasis& basis, const Vec
 
 
 // Projections of Z until the bound verifies (true, out filled) or they stop lowering the
-// residual (Z is then the last, most nearly feasible, point).
+// residual. With `refresh_budget` > 0 each round rebuilds the metric at the current Z
+// (a QR each, counted down), else the given one is used throughout.
 bool project_and_verify(const lmi::LmiProblem& lmi, const SparseBasis& basis, const VectorXd& c,
                         const ProjectionMetric& metric, MatrixXd& Z, const std::vector<lmi::SparseEntry>& basis_error,
-                        const ScaledOperator& op, DualBound& out) {
-  for (int round = 0; round < kProjectionRounds && project(lmi, basis, c, metric, Z); ++round) {
+                        const ScaledOperator& op, DualBound& out, int* refresh_budget = nullptr) {
+  for (int round = 0; round < kProjectionRounds; ++round) {
+    const bool refresh = refresh_budget && *refresh_budget > 0;
+    if (refresh) --*refresh_budget;
+    if (!(refresh ? project(lmi, basis, c, projection_metric(lmi, Z), Z) : project(lmi, basis, c, metric, Z))) break;
     DualBound candidate = out;
     if (verify_dual(lmi, basis, c, Z, basis_error, op, candidate)) {
       candidate.verified = true;
@@ -380,17 +384,18 @@ DualBound verified_bracket(const lmi::LmiProblem& lmi, const VectorXd& c, const 
   if (project_and_verify(lmi, basis, c, metric, Zf, basis_error, op, out)) return out;
   // Near the optimum Z is nearly singular (complementarity): shifts η·diag(Z₀) move it
   // inside the cone (the bound loses ~η·N relative), then projections.
-  int fresh_metrics = 0;
   for (const double eta : kInteriorShifts) {
     MatrixXd Z = Z0;
     Z.diagonal() += eta * diag;
     if (project_and_verify(lmi, basis, c, metric, Z, basis_error, op, out)) return out;
-    // the metric of Z₀ may be too far from the shifted point's: once more with its own
-    if (fresh_metrics++ < kFreshMetrics) {
-      Z = Z0;
-      Z.diagonal() += eta * diag;
-      if (project_and_verify(lmi, basis, c, projection_metric(lmi, Z), Z, basis_error, op, out)) return out;
-    }
+  }
+  // the metric of Z₀ may be too far from the shifted points': again, each round with its own
+  int budget = kFreshMetrics;
+  for (const double eta : kInteriorShifts) {
+    if (budget <= 0) break;
+    MatrixXd Z = Z0;
+    Z.diagonal() += eta * diag;
+    if (project_and_verify(lmi, basis, c, metric, Z, basis_error, op, out, &budget)) return out;
   }
   // Last: move it towards the dual point of an early, well-centred primal point, whose own projections
   // converge, by the smallest θ that verifies (the bound loses ~θ·(its gap)).
