@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -41,8 +40,10 @@ constexpr double kInteriorShifts[] = {1e-13, 1e-12, 1e-11, 1e-10, 1e-9, 1e-8, 1e
 // Projection metrics built beyond the first (one QR of an N(N+1)/2 × p matrix each, the
 // dominant cost at large n) when the first does not verify.
 constexpr int kFreshMetrics = 6;
-// Weights θ of the early dual point in (1 − θ)·Z_final + θ·Z_early, tried in turn.
-constexpr double kInteriorWeights[] = {1e-12, 1e-10, 1e-8, 1e-6, 1e-4};
+// Weights θ of an earlier path point's dual in (1 − θ)·Z_final + θ·Z_earlier, tried in
+// turn, and how many earlier centred points are tried (one QR each).
+constexpr double kInteriorWeights[] = {1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2};
+constexpr int kPathCandidates = 4;
 
 // A ≻ shift·I, verified by a floating-point Cholesky factorisation (Rump, "Verification of
 // positive definiteness", BIT 46, 2006, Thm. 2.3): if fl-Cholesky of A − (c + shift)·I
@@ -231,7 +232,8 @@ double trace_lower_bound(const MatrixXd& Y, const MatrixXd& M0, double& value) {
       a += std::abs(t);
     }
   value = static_cast<double>(s);
-  return static_cast<double>(s - gamma_long(static_cast<double>(Y.size()) + 1) * a) * (1 - 2 * kUnitRoundoff);
+  const double lo = static_cast<double>(s - gamma_long(static_cast<double>(Y.size()) + 1) * a);
+  return lo - 2 * kUnitRoundoff * std::abs(lo);  // the rounding to double, either sign
 }
 
 // out += Σᵢ |xᵢ|·|entries of i| (both triangles).
@@ -362,7 +364,7 @@ bool project_and_verify(const lmi::LmiProblem& lmi, const SparseBasis& basis, co
 }  // namespace
 
 DualBound verified_bracket(const lmi::LmiProblem& lmi, const VectorXd& c, const VectorXd& x, double margin,
-                           const std::vector<lmi::SparseEntry>& basis_error, const VectorXd& x_interior) {
+                           const std::vector<lmi::SparseEntry>& basis_error, const std::vector<VectorXd>& path) {
   DualBound out;
   const SparseBasis basis = sparse_basis(lmi);
   out.upper_verified = verify_upper(lmi, basis, x, basis_error);
@@ -397,13 +399,17 @@ DualBound verified_bracket(const lmi::LmiProblem& lmi, const VectorXd& c, const 
     Z.diagonal() += eta * diag;
     if (project_and_verify(lmi, basis, c, metric, Z, basis_error, op, out, &budget)) return out;
   }
-  // Last: move it towards the dual point of an early, well-centred primal point, whose own projections
-  // converge, by the smallest θ that verifies (the bound loses ~θ·(its gap)).
-  MatrixXd Zi;
-  std::string why;
-  if (x_interior.size() == x.size() && central_dual_point(lmi, c, x_interior, margin, Zi, why)) {
-    DualBound interior = out;
-    project_and_verify(lmi, basis, c, projection_metric(lmi, Zi), Zi, basis_error, op, interior);
+  // Last: the dual points of earlier centred points of the path, newest first — further
+  // inside the cone, with a gap about μ times larger each — alone, or pulling the final
+  // one inside by the smallest weight θ that verifies (the bound then loses ~θ·their gap).
+  int tried = 0;
+  for (auto it = path.rbegin(); it != path.rend() && tried < kPathCandidates; ++it) {
+    MatrixXd Zi;
+    std::string why;
+    if (it->size() != x.size() || (*it - x).norm() == 0 || !central_dual_point(lmi, c, *it, margin, Zi, why)) continue;
+    ++tried;
+    DualBound alone = out;
+    const bool alone_ok = project_and_verify(lmi, basis, c, projection_metric(lmi, Zi), Zi, basis_error, op, alone);
     for (const double theta : kInteriorWeights) {
       MatrixXd Z = (1 - theta) * Zf + theta * Zi;
       DualBound candidate = out;
@@ -411,9 +417,15 @@ DualBound verified_bracket(const lmi::LmiProblem& lmi, const VectorXd& c, const 
           project_and_verify(lmi, basis, c, metric, Z, basis_error, op, candidate)) {
         candidate.verified = true;
         candidate.detail.clear();
+        if (alone_ok && alone.lower_bound > candidate.lower_bound) break;
         return candidate;
       }
       out.detail = candidate.detail;
+    }
+    if (alone_ok) {
+      alone.verified = true;
+      alone.detail.clear();
+      return alone;
     }
   }
   if (out.detail.empty()) out.detail = "the projections of the dual point did not lower its residual";

@@ -311,7 +311,7 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
     s_.last_gap_accurate = gap_accurate;
     s_.last_t = s_.t;
     s_.have_centred = true;
-    if (minimise && sol_.x_interior.size() == 0) sol_.x_interior = z;
+    if (minimise) sol_.centred_path.push_back(z.head(n_));
     const double gap_goal = opt_.relative_gap_tol * std::max(std::abs(obj), kObjectiveFloor);
     if (minimise && gap <= gap_goal) {
       if (gap_accurate) return true;

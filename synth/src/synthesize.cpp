@@ -263,7 +263,7 @@ namespace {
 void record_bracket(const Theorem1Lmi& T, const Plant& scaled, const sdp::Solution& sol, const Settings& settings,
                     double f, SolverInfo& info) {
   const sdp::DualBound b = sdp::verified_bracket(T.lmi, T.lmi.cost_of(T.g), sol.x, settings.lmi_margin,
-                                                 theorem1_basis_error(T, scaled), sol.x_interior);
+                                                 theorem1_basis_error(T, scaled), sol.centred_path);
   info.gap_certified = b.verified && b.upper_verified;
   info.gap_detail = b.verified ? (b.upper_verified ? "" : "the solution point is not verifiably strictly feasible")
                                : b.detail;

@@ -1,11 +1,12 @@
 // A verified bracket of the optimum of   p* = inf { cᵀx : M(x) ≺ 0 }   (docs/maths.md §5.9):
 // a lower bound from an explicitly constructed dual point Z ⪰ 0 with c + 𝒜*(Z) = 0
-// (weak duality, eq. (113)) and an upper bound from a point x with M(x) ≺ 0 verified by an
-// eigenvalue computation. Every rounding error is bounded and subtracted, and the residual
+// (weak duality, eq. (113)) and an upper bound from a point x with M(x) ≺ 0, both
+// definiteness claims verified by a shifted floating-point Cholesky test (Rump 2006).
+// Every rounding error is bounded and subtracted, and the residual
 // of the dual equalities is removed by an explicit correction whose size is bounded
 // (eqs. (114)–(116)), so the bound holds for the strict LMI as posed — it does not use the
 // solver's margin ε, its feasibility radius or its duality-gap estimate. Knows nothing of
-// the barrier: it needs only the LMI data and a primal point.
+// the barrier: it needs only the LMI data and primal points.
 #pragma once
 #include <Eigen/Dense>
 #include <string>
@@ -32,10 +33,11 @@ struct DualBound {
 // caller means and the stored one, where forming the stored Mᵢ rounded; the bracket is
 // then for the caller's LMI (M₀ is taken as exact). Costs O(p·N²) for the sparse basis and
 // O(p³) for the smallest eigenvalue of the Gram matrix of the Mᵢ.
-// x_interior (optional): an early, well-centred point of the same path
-// (sdp::Solution::x_interior), whose dual point pulls the final one inside the cone.
+// path (optional): earlier centred points of the same path, oldest first
+// (sdp::Solution::centred_path); their dual points, further inside the cone, are tried
+// when the final one cannot be verified.
 DualBound verified_bracket(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c, const Eigen::VectorXd& x,
                            double margin, const std::vector<lmi::SparseEntry>& basis_error = {},
-                           const Eigen::VectorXd& x_interior = Eigen::VectorXd());
+                           const std::vector<Eigen::VectorXd>& path = {});
 
 }  // namespace hinf::sdp

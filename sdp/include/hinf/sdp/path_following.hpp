@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "hinf/lmi/lmi_problem.hpp"
 #include "hinf/sdp/status.hpp"
@@ -49,9 +50,9 @@ struct Solution {
   double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (42))
   double relative_gap = 0;       // gap/|cᵀx|
   double dual_bound = 0;         // tr(W M₀)/t with the margin removed: ≈ lower bound on p*
-  // The first centred point of phase II (small t, far inside): its dual point is strictly
-  // interior, for the verified bracket (dual_bound.hpp). Size 0 if phase II never centred.
-  Eigen::VectorXd x_interior;
+  // The centred points of phase II, oldest first (the last is x): their dual points lie
+  // further inside the cone, for the verified bracket (dual_bound.hpp).
+  std::vector<Eigen::VectorXd> centred_path;
   double elapsed_s = 0;
 };
 
