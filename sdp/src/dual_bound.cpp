@@ -48,15 +48,20 @@ constexpr int kPathCandidates = 4;
 // A ≻ shift·I, verified by a floating-point Cholesky factorisation (Rump, "Verification of
 // positive definiteness", BIT 46, 2006, Thm. 2.3): if fl-Cholesky of A − (c + shift)·I
 // succeeds with c = γ_{n+1}/(1 − γ_{n+1})·tr(A) + 4n(2(n+2) + max Aᵢᵢ)·η (η the smallest
-// subnormal), then A − shift·I is positive definite. A should be Jacobi-scaled.
+// subnormal), then A − shift·I is positive definite. A should be Jacobi-scaled. The
+// factorisation runs in long double (A converts exactly; u = 2^-64 on x86-64), so that c
+// is ~2000× below λ_min of the nearly singular dual points near the optimum (λ_min(Z)
+// ~1e-14 relative at paper δ̄ = 1, where double's c ≈ N²·u ≈ 4e-13 cannot verify them).
 bool verified_positive_definite(const MatrixXd& A, double shift) {
-  const double n = static_cast<double>(A.rows());
-  const double g = gamma_k(n + 1);
-  const double c = g / (1 - g) * A.trace() +
-                   4 * n * (2 * (n + 2) + A.diagonal().maxCoeff()) * std::numeric_limits<double>::denorm_min();
-  MatrixXd B = A;
-  B.diagonal().array() -= (c + shift) * (1 + 4 * kUnitRoundoff);
-  return Eigen::LLT<MatrixXd>(B).info() == Eigen::Success;
+  using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  constexpr long double u = std::numeric_limits<long double>::epsilon() / 2;
+  const long double n = static_cast<long double>(A.rows());
+  const long double g = (n + 1) * u / (1 - (n + 1) * u);
+  LongMatrix B = A.cast<long double>();
+  const long double c = g / (1 - g) * B.trace() * (1 + 4 * n * u) +
+                        4 * n * (2 * (n + 2) + B.diagonal().maxCoeff()) * std::numeric_limits<long double>::denorm_min();
+  B.diagonal().array() -= (c + static_cast<long double>(shift)) * (1 + 4 * u);
+  return Eigen::LLT<LongMatrix>(B).info() == Eigen::Success;
 }
 
 double eigen_error(const MatrixXd& A) { return kEigenErrorFactor * A.rows() * kUnitRoundoff * A.norm(); }
@@ -430,6 +435,17 @@ DualBound verified_bracket(const lmi::LmiProblem& lmi, const VectorXd& c, const 
   }
   if (out.detail.empty()) out.detail = "the projections of the dual point did not lower its residual";
   return out;
+}
+
+// Phase I's LMI M(x) − sI (docs/maths.md (118)): the caller's with one more scalar
+// parameter, last, entering every diagonal block as −I; minimise s.
+DualBound verified_infeasibility(const lmi::LmiProblem& lmi, const VectorXd& z, double margin,
+                                 const std::vector<lmi::SparseEntry>& basis_error, const std::vector<VectorXd>& path) {
+  lmi::LmiProblem phase1 = lmi;
+  const lmi::VarId s = phase1.add_scalar("s");
+  for (int b = 0; b < phase1.num_blocks(); ++b)
+    phase1.add_scalar_term(b, b, s, -MatrixXd::Identity(phase1.block_size(b), phase1.block_size(b)));
+  return verified_bracket(phase1, phase1.cost_of(s), z, margin, basis_error, path);
 }
 
 }  // namespace hinf::sdp

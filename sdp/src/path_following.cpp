@@ -20,6 +20,11 @@ using Eigen::VectorXd;
 // weight keeps the phase-I centre from drifting to huge objective values).
 constexpr double kPhase1Radius = 1e8;
 constexpr double kPhase1Weight = 1e-3;
+// Phase I without the objective penalty ends as infeasible once s − gap > 0 and the gap
+// is within this fraction of s:
+// a point that close to its centre gives a tight, verifiable dual certificate
+// (docs/maths.md (118)); the first s − gap > 0 alone is often too poorly centred.
+constexpr double kInfeasibleGapFraction = 1e-3;
 // When a late centring fails on round-off, the last centred point is returned at once if
 // its gap is within this many relative_gap_tol; above, shorter steps in t are retried.
 // Measured (random n = 16): 10 → 157 Newton iterations ending at a relative gap of
@@ -295,10 +300,11 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
           return false;
       }
     }
-    if (!minimise && obj - gap > 0) {
-      // converged with s > 0: under the objective penalty, retry without it; without it,
-      // certified infeasible (even the lower bound on s* is positive)
+    if (!minimise && obj - gap > 0 && (phase1_weight_ > 0 || gap <= kInfeasibleGapFraction * obj)) {
+      // s* > 0: under the objective penalty, retry without it at once; without it,
+      // infeasible by the gap estimate (s − gap > 0), for the caller to verify
       if (phase1_weight_ > 0) return false;
+      sol_.phase1_path.push_back(z);
       sol_.status = Status::Infeasible;
       sol_.detail = "no strictly feasible point: min s = " + std::to_string(obj) + " > 0";
       return false;
@@ -311,7 +317,10 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
     s_.last_gap_accurate = gap_accurate;
     s_.last_t = s_.t;
     s_.have_centred = true;
-    if (minimise) sol_.centred_path.push_back(z.head(n_));
+    if (minimise)
+      sol_.centred_path.push_back(z.head(n_));
+    else
+      sol_.phase1_path.push_back(z);
     const double gap_goal = opt_.relative_gap_tol * std::max(std::abs(obj), kObjectiveFloor);
     if (minimise && gap <= gap_goal) {
       if (gap_accurate) return true;
@@ -346,6 +355,7 @@ bool PathFollower::find_feasible(VectorXd& x) {
   bool ok = false;
   for (double eta : {kPhase1Weight, 0.0}) {
     phase1_weight_ = eta;
+    sol_.phase1_path.clear();
     LogDetBarrier b1(lmi_, c_, opt_.lmi_margin, r1, true, eta);
     z.head(n_) = x;
     z(n_) = lmax + 1.0;

@@ -11,6 +11,7 @@
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/stability.hpp"
+#include "hinf/certify/quadratic_stability.hpp"
 #include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/sdp/dual_bound.hpp"
@@ -65,6 +66,17 @@ void preflight(const Plant& plant, const Settings& settings) {
                   "radius of A + H F E is " + fmt(s.max_spectral_radius) +
                   " (nominal " + fmt(rho) + "); reduce the uncertainty (H, E) or stabilise the plant");
     }
+    // Robust stability is not enough: Theorem 1 needs a quadratic Lyapunov function for
+    // every admissible F, i.e. ‖E (zI − A)⁻¹ H‖∞ < 1 (docs/maths.md §3.7, eq. (119)).
+    const certify::GainWitness w = certify::uncertainty_gain_witness(plant.A, plant.H, plant.E);
+    if (w.verified)
+      throw Error(ErrorCode::Infeasible,
+                  "infeasible, with a certificate: A + H F E is robustly Schur stable for the sampled F but not "
+                  "quadratically stable — the uncertainty channel's gain ‖E (zI − A)⁻¹ H‖ is at least " +
+                      fmt(w.gain_lower_bound) + " > 1 at θ = " + fmt(w.theta) +
+                      " rad/sample (verified), so no Lyapunov matrix serves every admissible F and Theorem 1 has no "
+                      "solution for any γ (docs/maths.md (119)); H∞ norm of that channel " + fmt(w.gain) +
+                      " (scaling H or E by less than 1/" + fmt(w.gain) + " meets this necessary condition)");
   }
 }
 
@@ -177,21 +189,46 @@ sdp::ProgressObserver staged(const IterationObserver& observer, SolveStage stage
   return [observer, stage](const sdp::Progress& p) { observer(IterationReport{stage, p}); };
 }
 
+// Phase I's verdict as a theorem (docs/maths.md (118)): Infeasible only with a verified dual
+// certificate that no point makes the LMI negative definite; otherwise a numerical failure
+// that reports the smallest violation reached.
+Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol,
+                            const std::vector<lmi::SparseEntry>& basis_error, const Settings& settings,
+                            const std::string& what, const std::string& hint) {
+  const double reached = sol.phase1_path.empty() ? NAN : sol.phase1_path.back()(lmi.num_params());
+  if (!sol.phase1_path.empty()) {
+    std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
+    const sdp::DualBound b = sdp::verified_infeasibility(lmi, sol.phase1_path.back(), settings.lmi_margin,
+                                                         basis_error, earlier);
+    if (b.verified && b.lower_bound > 0)
+      return Error(ErrorCode::Infeasible,
+                   what + ": infeasible, with a certificate: a verified dual point Z ⪰ 0 (tr Z = 1, tr(Z Mᵢ) = 0) "
+                          "proves that the largest eigenvalue of the LMI is at least " + fmt(b.lower_bound) +
+                          " > 0 at every point (docs/maths.md (118))" + hint);
+    return Error(ErrorCode::NumericalFailure,
+                 what + ": phase I ended with the smallest violation " + fmt(reached) +
+                     " > 0 (largest eigenvalue of the LMI), but no certificate of infeasibility could be "
+                     "verified (" + b.detail + "); the problem may be feasible only at infinity or be badly "
+                     "conditioned");
+  }
+  return Error(ErrorCode::NumericalFailure, what + ": phase I ended infeasible without a final point");
+}
+
 // Corollary 1, docs/maths.md (21): minimise γ² subject to LMI (18). Throws with the
 // solver's reason if it does not end Solved.
-sdp::Solution solve_corollary1(const Theorem1Lmi& T, const Settings& settings,
-                               const IterationObserver& observer) {
+sdp::Solution solve_corollary1(const Theorem1Lmi& T, const std::vector<lmi::SparseEntry>& basis_error,
+                               const Settings& settings, const IterationObserver& observer) {
   const VectorXd c = T.lmi.cost_of(T.g);
   sdp::Solution sol = sdp::minimize_linear(T.lmi, c, solver_options(settings), VectorXd(),
                                            staged(observer, SolveStage::Synthesis));
   if (sol.status == sdp::Status::Solved) return sol;
-  const ErrorCode code = error_code_for(sol.status);
+  if (sol.status == sdp::Status::Infeasible)
+    throw infeasibility_verdict(T.lmi, sol, basis_error, settings, "Theorem 1 LMI",
+                                " (the plant is robustly Schur stable for the sampled F, but the uncertainty "
+                                "bound H, E is too large for a quadratic certificate)");
   std::string msg = std::string("Theorem 1 LMI: ") + sdp::status_message(sol.status);
   if (!sol.detail.empty()) msg += ": " + sol.detail;
-  if (code == ErrorCode::Infeasible)
-    msg += " (the plant is Schur stable, so the uncertainty bound H, E is too large for a "
-           "quadratic certificate)";
-  throw Error(code, msg);
+  throw Error(error_code_for(sol.status), msg);
 }
 
 // The γ back-off (docs/maths.md §6): at γ_b² = (1 + b)²·γ*², the point of largest LMI
@@ -260,10 +297,10 @@ std::string failed_checks(const Certificate& cert, double gamma) {
 namespace {
 // The optimality bracket of the user's problem (docs/maths.md §5.9): a lower bound on γ*²
 // of the strict LMI (18) from a verified dual point, in the user's units (exact: ÷ 2^2k).
-void record_bracket(const Theorem1Lmi& T, const Plant& scaled, const sdp::Solution& sol, const Settings& settings,
-                    double f, SolverInfo& info) {
+void record_bracket(const Theorem1Lmi& T, const std::vector<lmi::SparseEntry>& basis_error, const sdp::Solution& sol,
+                    const Settings& settings, double f, SolverInfo& info) {
   const sdp::DualBound b = sdp::verified_bracket(T.lmi, T.lmi.cost_of(T.g), sol.x, settings.lmi_margin,
-                                                 theorem1_basis_error(T, scaled), sol.centred_path);
+                                                 basis_error, sol.centred_path);
   info.gap_certified = b.verified && b.upper_verified;
   info.gap_detail = b.verified ? (b.upper_verified ? "" : "the solution point is not verifiably strictly feasible")
                                : b.detail;
@@ -299,10 +336,11 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
   preflight(plant, settings);
 
   const Theorem1Lmi T = build_theorem1(plant);
-  const sdp::Solution sol = solve_corollary1(T, settings, observer);
+  const std::vector<lmi::SparseEntry> basis_error = theorem1_basis_error(T, plant);
+  const sdp::Solution sol = solve_corollary1(T, basis_error, settings, observer);
   SynthesisResult res;
   res.solver = solver_info(sol, T, sc, settings);
-  record_bracket(T, plant, sol, settings, sc.gamma_factor(), res.solver);
+  record_bracket(T, basis_error, sol, settings, sc.gamma_factor(), res.solver);
 
   certify::Theorem1Point pt;
   if (settings.gamma_backoff > 0) {

@@ -112,4 +112,53 @@ TEST(DualBound, DataErrorWidensTheBracket) {
   EXPECT_GT(widened.residual_bound, exact.residual_bound);
 }
 
+// x·I₂ + I₂ ≺ 0 and 1 − x ≺ 0 (x < −1 and x > 1) beside a feasible part −I ≺ X ≺ I:
+// infeasible, and phase I's s* = inf max(x + 1, 1 − x, λ_max(±X) − 1) = 1 (at x = 0, X = 0).
+TEST(DualBound, CertifiesInfeasibilityWithTheClosedFormViolation) {
+  LmiProblem lmi({2, 1, 2, 2});
+  const hinf::lmi::VarId x = lmi.add_scalar("x");
+  const hinf::lmi::VarId X = lmi.add_symmetric("X", 2);
+  lmi.add_scalar_term(0, 0, x, MatrixXd::Identity(2, 2));
+  lmi.add_constant(0, 0, MatrixXd::Identity(2, 2));
+  lmi.add_scalar_term(1, 1, x, -MatrixXd::Identity(1, 1));
+  lmi.add_constant(1, 1, MatrixXd::Identity(1, 1));
+  lmi.add_term(2, 2, X, MatrixXd::Identity(2, 2), MatrixXd::Identity(2, 2));
+  lmi.add_constant(2, 2, -MatrixXd::Identity(2, 2));
+  lmi.add_term(3, 3, X, -MatrixXd::Identity(2, 2), MatrixXd::Identity(2, 2));
+  lmi.add_constant(3, 3, -MatrixXd::Identity(2, 2));
+  const hinf::sdp::Options o;
+  const hinf::sdp::Solution sol = hinf::sdp::minimize_linear(lmi, lmi.cost_of(x), o);
+  ASSERT_EQ(sol.status, hinf::sdp::Status::Infeasible) << sol.detail;
+  ASSERT_FALSE(sol.phase1_path.empty());
+  const std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
+  const hinf::sdp::DualBound b =
+      hinf::sdp::verified_infeasibility(lmi, sol.phase1_path.back(), o.lmi_margin, {}, earlier);
+  ASSERT_TRUE(b.verified) << b.detail;
+  EXPECT_LE(b.lower_bound, 1.0) << "a floor above the true s* = 1 is false";
+  // phase I stops once its gap is within 1e-3 of s (path_following.cpp): the floor is that tight
+  EXPECT_GT(b.lower_bound, 1.0 - 2e-3) << "the certificate should be tight";
+}
+
+// [x, 1; 1, 0] ≺ 0 has no solution, but s* = inf λ_max = 0 is approached only as x → −∞:
+// phase I (with its ball) may end with s > 0, yet no certificate of infeasibility may claim
+// a positive floor — that would be a false exit 3.
+TEST(DualBound, NoInfeasibilityCertificateWhenTheInfimumIsZero) {
+  LmiProblem lmi({2});
+  const hinf::lmi::VarId x = lmi.add_scalar("x");
+  MatrixXd K = MatrixXd::Zero(2, 2);
+  K(0, 0) = 1;
+  lmi.add_scalar_term(0, 0, x, K);
+  MatrixXd M0 = MatrixXd::Zero(2, 2);
+  M0(0, 1) = M0(1, 0) = 1;
+  lmi.add_constant(0, 0, M0);
+  const hinf::sdp::Options o;
+  const hinf::sdp::Solution sol = hinf::sdp::minimize_linear(lmi, lmi.cost_of(x), o);
+  ASSERT_NE(sol.status, hinf::sdp::Status::Solved);
+  if (sol.phase1_path.empty()) return;
+  const std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
+  const hinf::sdp::DualBound b =
+      hinf::sdp::verified_infeasibility(lmi, sol.phase1_path.back(), o.lmi_margin, {}, earlier);
+  EXPECT_FALSE(b.verified && b.lower_bound > 0) << "false certificate: floor " << b.lower_bound;
+}
+
 }  // namespace

@@ -40,4 +40,14 @@ DualBound verified_bracket(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c,
                            double margin, const std::vector<lmi::SparseEntry>& basis_error = {},
                            const std::vector<Eigen::VectorXd>& path = {});
 
+// A verified certificate that M(x) ≺ 0 has no solution (docs/maths.md §5.9, eq. (118)):
+// the bracket of phase I's problem   s* = inf { s : M(x) − sI ≺ 0 }   over (x, s). Its
+// dual point is a Z ⪰ 0 with tr Z = 1 and tr(Z Mᵢ) = 0 for every i, so tr(Z M(x)) = tr(Z M₀)
+// for all x; a verified lower_bound > 0 is therefore a theorem that no x makes M(x) ≺ 0.
+// z: phase I's final point (x, s) with M(x) − sI ⪯ −εI (ε = margin); path: its earlier
+// centred points, oldest first (sdp::Solution::phase1_path); basis_error as above.
+DualBound verified_infeasibility(const lmi::LmiProblem& lmi, const Eigen::VectorXd& z, double margin,
+                                 const std::vector<lmi::SparseEntry>& basis_error = {},
+                                 const std::vector<Eigen::VectorXd>& path = {});
+
 }  // namespace hinf::sdp

@@ -18,7 +18,7 @@ namespace hinf::sdp {
 // The solver's own options (as Ceres's Minimizer::Options), built by the caller from its
 // settings; each field's meaning and default is documented here once.
 struct Options {
-  double lmi_margin = 1e-11;             // ε: the solver enforces −M(x) ⪰ ε·I
+  double lmi_margin = 1e-12;             // ε: the solver enforces −M(x) ⪰ ε·I
   double relative_gap_tol = 1e-7;        // stop when the certified gap ≤ this·|cᵀx|
   double barrier_growth = 50.0;          // μ: t grows by at most this factor per centring
   double feasibility_radius = 1e8;       // ρ: the ball ‖x‖ < ρ that bounds the barrier
@@ -49,10 +49,13 @@ struct Solution {
   double objective = 0;          // cᵀx
   double gap = 0;                // certified bound on cᵀx − p* (docs/maths.md (42))
   double relative_gap = 0;       // gap/|cᵀx|
-  double dual_bound = 0;         // tr(W M₀)/t with the margin removed: ≈ lower bound on p*
   // The centred points of phase II, oldest first (the last is x): their dual points lie
   // further inside the cone, for the verified bracket (dual_bound.hpp).
   std::vector<Eigen::VectorXd> centred_path;
+  // Phase I's centred points (x, s) of its last run, oldest first: when it ends
+  // Infeasible, the last is the final point, for the verified certificate of
+  // infeasibility (dual_bound.hpp verified_infeasibility).
+  std::vector<Eigen::VectorXd> phase1_path;
   double elapsed_s = 0;
 };
 

@@ -6,7 +6,8 @@ namespace hinf::sdp {
 
 enum class Status {
   Solved,          // certified relative gap below tolerance
-  Infeasible,      // phase I ended with a certified positive minimal violation
+  Infeasible,      // phase I ended with a positive minimal violation (by the barrier's gap
+                   // estimate; a theorem only once verified_infeasibility, dual_bound.hpp, verifies it)
   MaxIterations,   // Newton-iteration limit hit
   TimeLimit,       // wall-clock limit hit
   NumericalError,  // the barrier could not be centred (round-off, engine failure)

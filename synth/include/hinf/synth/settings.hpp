@@ -8,7 +8,7 @@ struct Settings {
   // Strictness margin of the LMI, relative to the equilibrated problem: the solver
   // enforces −M(x) ⪰ lmi_margin·I (docs/maths.md (26), [D2], [D3]). Refused below 1e-14
   // (solver tolerance).
-  double lmi_margin = 1e-11;
+  double lmi_margin = 1e-12;
   // Stop when the barrier's duality gap (N+1)/t is below this fraction of γ².
   double relative_gap_tol = 1e-7;
   // Factor by which the barrier parameter t grows between centring steps.
