@@ -3,6 +3,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "hinf/sim/rng.hpp"
@@ -39,7 +40,17 @@ std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::ui
   };
   const int n_threads = static_cast<int>(std::min<long>(std::max(1, jobs), std::max<long>(1, runs)));
   std::vector<std::thread> threads;
-  for (int j = 1; j < n_threads; ++j) threads.emplace_back(worker);
+  threads.reserve(static_cast<std::size_t>(n_threads));
+  // A thread the system cannot create (address space, process limit) is simply not added:
+  // the threads already running, and this one, share the runs (every run's seed depends
+  // on its index only, so the result is the same).
+  for (int j = 1; j < n_threads; ++j) {
+    try {
+      threads.emplace_back(worker);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   worker();
   for (auto& t : threads) t.join();
   for (const auto& e : errors)

@@ -178,6 +178,27 @@ TEST(HinfSim, MonteCarloIndependentOfJobs) {
   fs::remove_all(b);
 }
 
+// --jobs 1000 under a 4 GiB address-space limit: the system refuses most of the threads
+// (8 MiB stacks); hinf-sim used to abort (SIGABRT, exit 134) destroying the started ones.
+// It must run on the threads it got and write the same files as --jobs 1.
+TEST(HinfSim, MonteCarloSurvivesThreadsTheSystemRefuses) {
+  if (HINF_SANITIZED) GTEST_SKIP() << "the sanitizers reserve terabytes of address space: no ulimit -v";
+  const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "paper-control.yaml";
+  const fs::path a = fresh_dir("limited"), b = fresh_dir("serial");
+  const fs::path log = fs::temp_directory_path() / ("hinf_sim_e2e_limit_" + std::to_string(::getpid()) + ".log");
+  const std::string common =
+      scenario.string() + " --duration 2 --runs 1000 --seed 9 --no-plots --quiet --out ";
+  const std::string limited = "bash -c 'ulimit -v 4194304 && exec " + std::string(HINF_SIM_EXE) + " " + common +
+                              a.string() + " --jobs 1000' > " + log.string() + " 2>&1";
+  const int status = std::system(limited.c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << slurp(log);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << slurp(log);
+  ASSERT_EQ(run_sim(common + b.string() + " --jobs 1", log), 0) << slurp(log);
+  for (const char* f : {"summary.json", "runs.csv", "trajectory.csv"}) EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
 TEST(HinfSim, InvalidScenarioExits2NamesKeyAndWritesNothing) {
   const fs::path dir = fresh_dir("bad");
   fs::create_directories(dir);

@@ -15,7 +15,8 @@ std::uint64_t run_seed(std::uint64_t seed, long run_index);
 // Called after each finished run, serialised (never concurrently), with (done, total).
 using ProgressCallback = std::function<void(long, long)>;
 
-// Results in run-index order; run 0 keeps its trajectory. jobs ≥ 1. If runs throw, the
+// Results in run-index order; run 0 keeps its trajectory. jobs ≥ 1 is an upper bound:
+// threads the system refuses to create are left out (same result). If runs throw, the
 // exception of the lowest-index failed run is rethrown after all threads have stopped.
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
                                        const ProgressCallback& progress);
