@@ -29,26 +29,36 @@ long double gamma_complex(int k) {
   return 1.5L * g / (1 - g);
 }
 
-// r = b − K x and an entrywise bound on its rounding, in long double.
+// (K v)ᵢ = z vᵢ − Σₖ Aᵢₖ vₖ for the exact K = zI − A (not its rounded form), in long double;
+// `mag` receives the sum of the magnitudes of the terms, for the rounding bound.
+cld exact_k_times(const MatrixXd& A, std::complex<double> z, const Eigen::Ref<const VectorXcd>& v, int i,
+                  long double& mag) {
+  const cld zi = cld(z.real(), z.imag()) * cld(v(i).real(), v(i).imag());
+  cld s = zi;
+  mag = std::abs(zi);
+  for (int k = 0; k < A.cols(); ++k) {
+    const cld t = static_cast<long double>(A(i, k)) * cld(v(k).real(), v(k).imag());
+    s -= t;
+    mag += std::abs(t);
+  }
+  return s;
+}
+
+// r = b − K x with K = zI − A exact, and a bound on its rounding, in long double.
 struct Residual {
   long double norm = 0;      // ‖r̂‖₂
   long double error = 0;     // ‖r − r̂‖₂ ≤ error
 };
 
-Residual residual(const MatrixXcd& K, const VectorXcd& x, const VectorXcd& b) {
+Residual residual(const MatrixXd& A, std::complex<double> z, const VectorXcd& x, const VectorXcd& b) {
   Residual out;
-  const int n = static_cast<int>(K.rows());
+  const int n = static_cast<int>(A.rows());
   long double sq = 0, err = 0;
   for (int i = 0; i < n; ++i) {
-    cld s = cld(b(i).real(), b(i).imag());
-    long double mag = std::abs(s);
-    for (int k = 0; k < n; ++k) {
-      const cld t = cld(K(i, k).real(), K(i, k).imag()) * cld(x(k).real(), x(k).imag());
-      s -= t;
-      mag += std::abs(t);
-    }
+    long double mag = 0;
+    const cld s = cld(b(i).real(), b(i).imag()) - exact_k_times(A, z, x, i, mag);
     sq += std::norm(s);
-    const long double e = gamma_complex(n + 1) * mag;
+    const long double e = gamma_complex(n + 2) * (mag + std::abs(cld(b(i).real(), b(i).imag())));
     err += e * e;
   }
   out.norm = std::sqrt(sq);
@@ -64,22 +74,17 @@ long double frobenius_up(const MatrixXcd& M) {
   return std::sqrt(s) * (1 + 4 * kLongUnitRoundoff * (M.size() + 2));
 }
 
-// ‖K⁻¹‖₂ ≤ ‖X‖_F / (1 − ‖I − K X‖_F) for an approximate inverse X (Neumann series), the
-// product's rounding included; +∞ if ‖I − K X‖_F is not verified below 1.
-long double inverse_norm_bound(const MatrixXcd& K, const MatrixXcd& X) {
-  const int n = static_cast<int>(K.rows());
+// ‖K⁻¹‖₂ ≤ ‖X‖_F / (1 − ‖I − K X‖_F) for K = zI − A and an approximate inverse X (Neumann
+// series), the product's rounding included; +∞ if ‖I − K X‖_F is not verified below 1.
+long double inverse_norm_bound(const MatrixXd& A, std::complex<double> z, const MatrixXcd& X) {
+  const int n = static_cast<int>(A.rows());
   long double sq = 0, err = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      cld s = i == j ? cld(1) : cld(0);
-      long double mag = i == j ? 1 : 0;
-      for (int k = 0; k < n; ++k) {
-        const cld t = cld(K(i, k).real(), K(i, k).imag()) * cld(X(k, j).real(), X(k, j).imag());
-        s -= t;
-        mag += std::abs(t);
-      }
+      long double mag = 0;
+      const cld s = (i == j ? cld(1) : cld(0)) - exact_k_times(A, z, X.col(j), i, mag);
       sq += std::norm(s);
-      const long double e = gamma_complex(n + 1) * mag;
+      const long double e = gamma_complex(n + 2) * (mag + (i == j ? 1 : 0));
       err += e * e;
     }
   const long double rho = (std::sqrt(sq) + std::sqrt(err)) * (1 + 8 * kLongUnitRoundoff);
@@ -97,7 +102,8 @@ GainWitness uncertainty_gain_witness(const MatrixXd& A, const MatrixXd& H, const
   w.gain = peak.norm;
   w.theta = peak.peak_frequency;
   if (!(peak.lower_bound > 1)) return w;
-  // z with |z| ≥ 1 exactly, K = zI − A, and the right singular vector u of the computed G(z)
+  // z with |z| ≥ 1 exactly and the right singular vector u of the computed G(z); K̂ is the
+  // rounded zI − A, used only to compute x̂ and X — the bounds below use the exact K
   const std::complex<double> z((1 + kModulusLift) * std::cos(w.theta), (1 + kModulusLift) * std::sin(w.theta));
   MatrixXcd K = -A.cast<std::complex<double>>();
   K.diagonal().array() += z;
@@ -109,7 +115,7 @@ GainWitness uncertainty_gain_witness(const MatrixXd& A, const MatrixXd& H, const
   const VectorXcd b = Hc * u;
   const VectorXcd x = lu.solve(b);
   // b̂ = fl(H u): the residual is taken against H u itself, fl's rounding added
-  Residual r = residual(K, x, b);
+  Residual r = residual(A, z, x, b);
   long double hu_err = 0;
   for (int i = 0; i < n; ++i) {
     long double mag = 0;
@@ -119,7 +125,7 @@ GainWitness uncertainty_gain_witness(const MatrixXd& A, const MatrixXd& H, const
     hu_err += e * e;
   }
   r.error += std::sqrt(hu_err);
-  const long double kinv = inverse_norm_bound(K, lu.inverse());
+  const long double kinv = inverse_norm_bound(A, z, lu.inverse());
   // ‖E x‖ ≥ ‖E x̂‖ − ‖E‖_F·‖K⁻¹‖·‖r‖, ‖E x̂‖ with its rounding
   long double ex_sq = 0, ex_err = 0;
   for (int i = 0; i < E.rows(); ++i) {
