@@ -5,6 +5,7 @@
 #include <hinf/common/error.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -118,6 +119,7 @@ void write_outputs(const Options& o, const hinf::sim::RunSetup& setup, const std
                       "cannot create the output directory '" + o.out_dir + "': " + ec.message());
   const Trajectory& trajectory = *results.front().trajectory;
   hinf::AtomicFileSet outputs;
+  outputs.protect(o.scenario_path);
   outputs.add((fs::path(o.out_dir) / "trajectory.csv").string(), format_trajectory_csv(trajectory));
   for (const auto& [file, content] : gains_files) outputs.add((fs::path(o.out_dir) / file).string(), content);
   outputs.add((fs::path(o.out_dir) / "runs.csv").string(), format_runs_csv(results));
@@ -178,6 +180,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // ulimit -f: EFBIG from the atomic writer (temporaries removed), not a kill mid-file
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -50,7 +50,7 @@ void add_codegen(CLI::App& app, Action& action) {
       hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
       const runtime_yaml::GainsFile gains = runtime_yaml::load_gains_file(args->gains);
       const hinf::codegen::GeneratedFiles files = hinf::codegen::generate_c(gains, options);
-      hinf::codegen::write_generated_files(files, args->out);
+      hinf::codegen::write_generated_files(files, args->out, {args->gains});
       for (const auto& f : files.files)
         std::cout << "wrote " << (std::filesystem::path(args->out) / f.name).lexically_normal().string()
                   << "\n";

@@ -21,7 +21,7 @@ void add_export_sdpa(CLI::App& app, Action& action) {
           cfg.plant, std::string("Theorem-1 LMI from ") + *config + " (sha256 " + cfg.sha256 +
                          "), by hinf-synth " + synth::tool_version() +
                          "\nminimise gamma^2; the SDPA dual objective is gamma*^2");
-      hinf::write_file_atomic(*output, text);
+      hinf::write_file_atomic(*output, text, {*config});
       std::cout << "SDPA problem written to " << *output << "\n";
       return 0;
     };

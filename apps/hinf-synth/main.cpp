@@ -1,5 +1,6 @@
 // hinf-synth: robust H∞ filter synthesis, certification, analysis and code generation.
 #include <algorithm>
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #endif
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) makes write() fail with EFBIG, reported by the atomic
+  // writer with the temporary removed, instead of killing the process mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
 #if defined(__GLIBC__)
   // MUMPS allocates and frees its workspace at every one of Ipopt's factorisations (and
   // the barrier's Hessian is ~N² doubles): served by mmap, or returned to the kernel by a

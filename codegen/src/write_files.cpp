@@ -30,7 +30,8 @@ struct CreatedDirectory {
 
 }  // namespace
 
-void write_generated_files(const GeneratedFiles& files, const std::string& directory) {
+void write_generated_files(const GeneratedFiles& files, const std::string& directory,
+                           const std::vector<std::string>& inputs) {
   if (directory.empty()) fail(directory, "empty output directory");
   CreatedDirectory created;
   const fs::path dir(directory);
@@ -53,6 +54,7 @@ void write_generated_files(const GeneratedFiles& files, const std::string& direc
 
   // All files appear together or not at all (hinf/common/atomic_file.hpp).
   AtomicFileSet set;
+  for (const std::string& in : inputs) set.protect(in);
   for (const auto& f : files.files) {
     if (f.name.empty() || f.name.find('/') != std::string::npos) fail(f.name, "invalid generated file name");
     set.add((dir / f.name).string(), f.contents);

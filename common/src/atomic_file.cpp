@@ -91,8 +91,9 @@ void sync_directory(const std::string& path) {
 
 }  // namespace
 
-void write_file_atomic(const std::string& path, const std::string& content) {
+void write_file_atomic(const std::string& path, const std::string& content, const std::vector<std::string>& inputs) {
   AtomicFileSet set;
+  for (const std::string& in : inputs) set.protect(in);
   set.add(path, content);
   set.commit();
 }
@@ -102,18 +103,37 @@ AtomicFileSet::~AtomicFileSet() {
   for (const Entry& e : entries_) ::unlink(e.temporary.c_str());
 }
 
+void AtomicFileSet::protect(const std::string& input) {
+  struct stat st;
+  if (::stat(input.c_str(), &st) == 0)
+    inputs_.push_back({static_cast<unsigned long long>(st.st_dev), static_cast<unsigned long long>(st.st_ino), input});
+}
+
+void AtomicFileSet::refuse_input(const std::string& target) const {
+  struct stat st;
+  if (::stat(target.c_str(), &st) != 0) return;
+  for (const FileId& in : inputs_)
+    if (static_cast<unsigned long long>(st.st_dev) == in.device && static_cast<unsigned long long>(st.st_ino) == in.inode)
+      fail(target, "it is the input file '" + in.path + "'; choose another output");
+}
+
 std::string AtomicFileSet::add(const std::string& path, const std::string& content) {
+  refuse_input(path);
   entries_.push_back({write_temporary(path, content), path});
   return entries_.back().temporary;
 }
 
 std::string AtomicFileSet::reserve(const std::string& path) {
+  refuse_input(path);
   entries_.push_back({write_temporary(path, std::string()), path});
   return entries_.back().temporary;
 }
 
 void AtomicFileSet::commit() {
-  for (const Entry& e : entries_) existing_mode(e.target);  // each still absent or a regular file
+  for (const Entry& e : entries_) {  // each still absent or a regular file, and no input
+    existing_mode(e.target);
+    refuse_input(e.target);
+  }
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     const Entry& e = entries_[i];
     if (std::rename(e.temporary.c_str(), e.target.c_str()) != 0) {

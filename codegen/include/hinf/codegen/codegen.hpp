@@ -43,7 +43,9 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
 
 // Writes every file into `directory` (created if missing). All files are first
 // written to temporary files in `directory` and then renamed, so a failure leaves
-// no partial file behind. Throws Error(InvalidInput) naming the path on failure.
-void write_generated_files(const GeneratedFiles& files, const std::string& directory);
+// no partial file behind; none of them replaces one of `inputs` (the same file, by
+// device and inode). Throws Error(InvalidInput) naming the path on failure.
+void write_generated_files(const GeneratedFiles& files, const std::string& directory,
+                           const std::vector<std::string>& inputs = {});
 
 }  // namespace hinf::codegen
