@@ -17,6 +17,7 @@ namespace {
 // Unit round-off of double and the classical bound γ_k = k·u/(1 − k·u) on the relative error
 // of a k-term sum of products (Higham, Accuracy and Stability, §3.1).
 constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
+using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 double gamma_k(double k) { return k * kUnitRoundoff / (1 - k * kUnitRoundoff); }
 // The same for sums accumulated in long double (x87 extended on x86-64: 2^-64; where long
 // double is double, this is u again).
@@ -53,7 +54,6 @@ constexpr int kPathCandidates = 4;
 // is ~2000× below λ_min of the nearly singular dual points near the optimum (λ_min(Z)
 // ~1e-14 relative at paper δ̄ = 1, where double's c ≈ N²·u ≈ 4e-13 cannot verify them).
 bool verified_positive_definite(const MatrixXd& A, double shift) {
-  using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
   constexpr long double u = std::numeric_limits<long double>::epsilon() / 2;
   const long double n = static_cast<long double>(A.rows());
   const long double g = (n + 1) * u / (1 - (n + 1) * u);
@@ -270,7 +270,6 @@ struct EvaluatedLmi {
 };
 
 EvaluatedLmi evaluate_accurately(const lmi::LmiProblem& lmi, const SparseBasis& b, const VectorXd& x) {
-  using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
   const int N = lmi.order();
   LongMatrix sum = lmi.constant().cast<long double>(), mag = sum.cwiseAbs();
   Eigen::MatrixXi count = Eigen::MatrixXi::Ones(N, N);

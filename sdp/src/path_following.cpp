@@ -21,9 +21,9 @@ using Eigen::VectorXd;
 constexpr double kPhase1Radius = 1e8;
 constexpr double kPhase1Weight = 1e-3;
 // Phase I without the objective penalty ends as infeasible once s − gap > 0 and the gap
-// is within this fraction of s:
-// a point that close to its centre gives a tight, verifiable dual certificate
-// (docs/maths.md (118)); the first s − gap > 0 alone is often too poorly centred.
+// is within this fraction of s: a point that close to its centre gives a tight,
+// verifiable dual certificate (docs/maths.md (118)); the first s − gap > 0 alone is often
+// too poorly centred.
 constexpr double kInfeasibleGapFraction = 1e-3;
 // When a late centring fails on round-off, the last centred point is returned at once if
 // its gap is within this many relative_gap_tol; above, shorter steps in t are retried.
@@ -300,11 +300,11 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
           return false;
       }
     }
+    if (!minimise) sol_.phase1_path.push_back(z);
     if (!minimise && obj - gap > 0 && (phase1_weight_ > 0 || gap <= kInfeasibleGapFraction * obj)) {
       // s* > 0: under the objective penalty, retry without it at once; without it,
       // infeasible by the gap estimate (s − gap > 0), for the caller to verify
       if (phase1_weight_ > 0) return false;
-      sol_.phase1_path.push_back(z);
       sol_.status = Status::Infeasible;
       sol_.detail = "no strictly feasible point: min s = " + std::to_string(obj) + " > 0";
       return false;
@@ -317,10 +317,7 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
     s_.last_gap_accurate = gap_accurate;
     s_.last_t = s_.t;
     s_.have_centred = true;
-    if (minimise)
-      sol_.centred_path.push_back(z.head(n_));
-    else
-      sol_.phase1_path.push_back(z);
+    if (minimise) sol_.centred_path.push_back(z.head(n_));
     const double gap_goal = opt_.relative_gap_tol * std::max(std::abs(obj), kObjectiveFloor);
     if (minimise && gap <= gap_goal) {
       if (gap_accurate) return true;

@@ -195,23 +195,21 @@ sdp::ProgressObserver staged(const IterationObserver& observer, SolveStage stage
 Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol,
                             const std::vector<lmi::SparseEntry>& basis_error, const Settings& settings,
                             const std::string& what, const std::string& hint) {
-  const double reached = sol.phase1_path.empty() ? NAN : sol.phase1_path.back()(lmi.num_params());
-  if (!sol.phase1_path.empty()) {
-    std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
-    const sdp::DualBound b = sdp::verified_infeasibility(lmi, sol.phase1_path.back(), settings.lmi_margin,
-                                                         basis_error, earlier);
-    if (b.verified && b.lower_bound > 0)
-      return Error(ErrorCode::Infeasible,
-                   what + ": infeasible, with a certificate: a verified dual point Z ⪰ 0 (tr Z = 1, tr(Z Mᵢ) = 0) "
-                          "proves that the largest eigenvalue of the LMI is at least " + fmt(b.lower_bound) +
-                          " > 0 at every point (docs/maths.md (118))" + hint);
-    return Error(ErrorCode::NumericalFailure,
-                 what + ": phase I ended with the smallest violation " + fmt(reached) +
-                     " > 0 (largest eigenvalue of the LMI), but no certificate of infeasibility could be "
-                     "verified (" + b.detail + "); the problem may be feasible only at infinity or be badly "
-                     "conditioned");
-  }
-  return Error(ErrorCode::NumericalFailure, what + ": phase I ended infeasible without a final point");
+  if (sol.phase1_path.empty())
+    return Error(ErrorCode::NumericalFailure, what + ": phase I ended infeasible without a final point");
+  const VectorXd& last = sol.phase1_path.back();
+  const std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
+  const sdp::DualBound b = sdp::verified_infeasibility(lmi, last, settings.lmi_margin, basis_error, earlier);
+  if (b.verified && b.lower_bound > 0)
+    return Error(ErrorCode::Infeasible,
+                 what + ": infeasible, with a certificate: a verified dual point Z ⪰ 0 (tr Z = 1, tr(Z Mᵢ) = 0) "
+                        "proves that the largest eigenvalue of the LMI is at least " + fmt(b.lower_bound) +
+                        " > 0 at every point (docs/maths.md (118))" + hint);
+  return Error(ErrorCode::NumericalFailure,
+               what + ": phase I ended with the smallest violation " + fmt(last(lmi.num_params())) +
+                   " > 0 (largest eigenvalue of the LMI), but no certificate of infeasibility could be "
+                   "verified (" + b.detail + "); the problem may be feasible only at infinity or be badly "
+                   "conditioned");
 }
 
 // Corollary 1, docs/maths.md (21): minimise γ² subject to LMI (18). Throws with the
