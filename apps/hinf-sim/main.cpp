@@ -4,13 +4,16 @@
 #include <CLI/CLI.hpp>
 #include <hinf/common/error.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include "hinf/common/atomic_file.hpp"
+#include "hinf/common/number_text.hpp"
 #include "hinf/sim/gains_source.hpp"
 #include "hinf/sim/monte_carlo.hpp"
 #include "hinf/sim/plots.hpp"
@@ -42,32 +45,51 @@ struct Options {
   long runs = 1;
   std::uint64_t seed = 1;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  double duration = -1;
+  std::optional<double> duration;
   bool no_plots = false, quiet = false, verbose = false;
 };
+
+// CLI11's own checks let "nan" through PositiveNumber (NaN <= 0 is false) and let an
+// unsigned option wrap "-1" to 2^64 - 1.
+const CLI::Validator kFinitePositive(
+    [](const std::string& text) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || !(v > 0))
+        return "must be a finite number > 0, got '" + text + "'";
+      return "";
+    },
+    "POSITIVE");
+const CLI::Validator kWholeNumber(
+    [](const std::string& text) -> std::string {
+      std::uint64_t v = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+        return "must be a whole number in [0, 18446744073709551615], got '" + text + "'";
+      return "";
+    },
+    "UINT");
 
 void add_options(CLI::App& app, Options& o) {
   app.add_option("scenario", o.scenario_path, "scenario file (YAML)")->required();
   app.add_option("--out,-o", o.out_dir, "output directory (created if missing)")->required();
   app.add_option("--runs", o.runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
       ->check(CLI::Range(1L, 1000000L));
-  app.add_option("--seed", o.seed, "base seed");
+  app.add_option("--seed", o.seed, "base seed, a whole number in [0, 2^64 - 1]")->check(kWholeNumber);
   app.add_option("--jobs,-j", o.jobs, "parallel runs (default: hardware threads)")->check(CLI::Range(1, 4096));
-  app.add_option("--duration", o.duration, "override the scenario's duration (s)")->check(CLI::PositiveNumber);
+  app.add_option("--duration", o.duration, "override the scenario's duration (s)")->check(kFinitePositive);
   app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
   app.add_flag("--quiet,-q", o.quiet, "no progress bar");
   app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
 }
 
 // --duration: a whole number of sample times; the steady-state window shrinks with it.
-void override_duration(hinf::sim::Scenario& s, double duration) {
-  if (!(duration > 0)) return;
-  const double ratio = duration / s.sample_time;
-  if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
-    throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                      "--duration " + std::to_string(duration) + ": must be a whole number of sample times");
-  s.duration = duration;
-  if (s.steady_state_start && *s.steady_state_start > duration) s.steady_state_start.reset();
+void override_duration(hinf::sim::Scenario& s, std::optional<double> duration) {
+  if (!duration) return;
+  const std::string problem = hinf::sim::timing_problem(*duration, s.sample_time);
+  if (!problem.empty())
+    throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(*duration) + ": " + problem);
+  s.duration = *duration;
+  if (s.steady_state_start && *s.steady_state_start > s.duration) s.steady_state_start.reset();
 }
 
 // The scenario and the gains of its LTI filters (read or synthesised); the gains files
@@ -182,6 +204,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   // ulimit -f: EFBIG from the atomic writer (temporaries removed), not a kill mid-file
   std::signal(SIGXFSZ, SIG_IGN);
+  hinf::remove_temporaries_on_signals();  // Ctrl-C or a kill leaves no temporary
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "hinf/common/atomic_file.hpp"
 #include "hinf/common/suggest.hpp"
 #include "hinf/common/error.hpp"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) makes write() fail with EFBIG, reported by the atomic
   // writer with the temporary removed, instead of killing the process mid-file.
   std::signal(SIGXFSZ, SIG_IGN);
+  hinf::remove_temporaries_on_signals();  // Ctrl-C or a kill leaves no temporary
 #if defined(__GLIBC__)
   // MUMPS allocates and frees its workspace at every one of Ipopt's factorisations (and
   // the barrier's Hessian is ~N² doubles): served by mmap, or returned to the kernel by a

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "frequency_response.hpp"
+#include "golden_section.hpp"
 #include "qz.hpp"
 #include "hinf/common/error.hpp"
 
@@ -51,6 +52,8 @@ constexpr int kMaxIterations = 60;
 // smooth peak σ_max is flat, so 0.618²² ≈ 2.5e-5 of the bracket already gives it to
 // ~1e-9 relative, and the level-set iteration, not this search, certifies the norm).
 constexpr int kGoldenSteps = 22;
+// ... or until the bracket in θ is this narrow.
+constexpr double kPeakWidth = 1e-12;
 
 void validate(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C,
               const Eigen::MatrixXd& D, double rel_tol) {
@@ -142,14 +145,10 @@ class PeakSearch {
     if (s > attained_) { attained_ = s; peak_ = theta; }
     return s;
   }
+  // A local maximum of σ_max on [a, b]: the minimum of −σ_max, to kPeakWidth in θ.
   void refine(double a, double b) {
-    const double r = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = b - r * (b - a), x2 = a + r * (b - a);
-    double f1 = evaluate(x1), f2 = evaluate(x2);
-    for (int i = 0; i < kGoldenSteps && b - a > 1e-12; ++i) {
-      if (f1 < f2) { a = x1; x1 = x2; f1 = f2; x2 = a + r * (b - a); f2 = evaluate(x2); }
-      else { b = x2; x2 = x1; f2 = f1; x1 = b - r * (b - a); f1 = evaluate(x1); }
-    }
+    detail::golden_section_minimise([this](double theta) { return -evaluate(theta); }, a, b,
+                                    kGoldenSteps, [](double l, double r) { return r - l <= kPeakWidth; });
   }
   double attained() const { return attained_; }
   double peak() const { return peak_; }

@@ -4,6 +4,7 @@
 #include <complex>
 
 #include "frequency_response.hpp"
+#include "golden_section.hpp"
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 
@@ -17,7 +18,6 @@ constexpr double kNormTolerance = 1e-10;
 // Golden-section search over log λ: bracket half-width and steps (0.618^70 · 2·35 ≈ 2e-13).
 constexpr double kLogLambdaHalfWidth = 35.0;
 constexpr int kGoldenSteps = 70;
-constexpr double kInvPhi = 0.6180339887498949;
 // Multiplier search by slopes: stop when the bracket in log λ is this narrow, or when
 // the minimum of log‖G_λ‖∞ is known to kLogNormGap (the norms' own accuracy); at most
 // kSlopeSearchMaxNorms norms before the golden-section fallback.
@@ -166,29 +166,13 @@ bool ScaledBoundedReal::slope_search(double gamma, double d0, Best& best) {
 
 // Golden-section search over the whole bracket, which needs only the norm's unimodality.
 void ScaledBoundedReal::golden_section_search(double gamma, double d0, Best& best) {
-  double a = d0 - kLogLambdaHalfWidth, b = d0 + kLogLambdaHalfWidth;
   auto norm_at = [&](double d) {
     const double f = scaled_norm(gamma, std::exp(d));
     best.record(d, f);
     return f;
   };
-  double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
-  double f1 = norm_at(x1), f2 = norm_at(x2);
-  for (int it = 0; it < kGoldenSteps && !best.done(); ++it) {
-    if (f1 <= f2) {  // the minimum of the unimodal function is in [a, x2]
-      b = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = b - kInvPhi * (b - a);
-      f1 = norm_at(x1);
-    } else {
-      a = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = a + kInvPhi * (b - a);
-      f2 = norm_at(x2);
-    }
-  }
+  detail::golden_section_minimise(norm_at, d0 - kLogLambdaHalfWidth, d0 + kLogLambdaHalfWidth,
+                                  kGoldenSteps, [&best](double, double) { return best.done(); });
 }
 
 ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {

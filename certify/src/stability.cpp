@@ -49,14 +49,20 @@ void add_sample(const Plant& plant, const Filter& filter, const Eigen::MatrixXd&
 
 }  // namespace
 
-double spectral_radius(const Eigen::MatrixXd& M) {
+std::complex<double> dominant_eigenvalue(const Eigen::MatrixXd& M) {
   if (M.rows() != M.cols())
     throw Error(ErrorCode::InvalidInput, "spectral_radius: matrix is " + std::to_string(M.rows()) +
                                              "×" + std::to_string(M.cols()) + ", not square");
   if (!M.allFinite()) throw Error(ErrorCode::InvalidInput, "spectral_radius: non-finite entry");
   if (M.size() == 0) return 0.0;
-  return balanced_eigenvalues(M).cwiseAbs().maxCoeff();  // balanced: docs/maths.md §4.4
+  const Eigen::VectorXcd ev = balanced_eigenvalues(M);  // balanced: docs/maths.md §4.4
+  Eigen::Index worst = 0;
+  for (Eigen::Index i = 1; i < ev.size(); ++i)
+    if (std::abs(ev(i)) > std::abs(ev(worst))) worst = i;
+  return ev(worst);
 }
+
+double spectral_radius(const Eigen::MatrixXd& M) { return std::abs(dominant_eigenvalue(M)); }
 
 StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
                                          int random_samples, unsigned seed) {

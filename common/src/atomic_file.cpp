@@ -4,10 +4,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <random>
 
 #include "hinf/common/error.hpp"
 
@@ -18,6 +22,51 @@ namespace fs = std::filesystem;
 
 // Attempts at a fresh temporary name before giving up (each one is O_EXCL).
 constexpr int kTemporaryNameAttempts = 100;
+
+// ---- temporaries removed on SIGINT/SIGTERM/SIGHUP ------------------------------------
+// A signal handler can only see process-wide state, so the live temporaries are kept in
+// a fixed table of slots (no allocation, async-signal-safe reads): Free → Writing (the
+// path is being copied) → Live (the handler unlinks it) → Free.
+constexpr int kSlots = 256;
+constexpr std::size_t kSlotPath = 4096;
+enum SlotState : int { kFree = 0, kWriting = 1, kLive = 2 };
+struct LiveTemporaries {
+  std::atomic<int> state[kSlots];
+  char path[kSlots][kSlotPath];
+};
+LiveTemporaries g_live{};  // the one piece of process-wide state of the writer
+
+int register_temporary(const std::string& name) {
+  if (name.size() >= kSlotPath) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (!g_live.state[i].compare_exchange_strong(expected, kWriting)) continue;
+    std::memcpy(g_live.path[i], name.c_str(), name.size() + 1);
+    g_live.state[i].store(kLive);
+    return i;
+  }
+  return -1;  // table full: this temporary is still removed on every failure, not on a signal
+}
+
+void unregister_temporary(int slot) {
+  if (slot >= 0) g_live.state[slot].store(kFree);
+}
+
+extern "C" void remove_temporaries_and_reraise(int sig) {
+  for (int i = 0; i < kSlots; ++i)
+    if (g_live.state[i].load() == kLive) ::unlink(g_live.path[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+// A name nobody can predict: pid, a random 64-bit number and the attempt.
+std::string random_suffix() {
+  std::random_device device;
+  const std::uint64_t r = (static_cast<std::uint64_t>(device()) << 32) ^ device();
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(r));
+  return buf;
+}
 
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
   throw Error(ErrorCode::InvalidInput, "cannot write '" + path + "': " + reason);
@@ -44,7 +93,7 @@ int existing_mode(const std::string& path) {
 int create_temporary(const std::string& path, std::string& name) {
   const fs::path p(path);
   const std::string stem = (fs::path(directory_of(path)) / ("." + p.filename().string() + ".tmp.")).string() +
-                           std::to_string(::getpid()) + ".";
+                           std::to_string(::getpid()) + "." + random_suffix() + ".";
   for (int attempt = 0; attempt < kTemporaryNameAttempts; ++attempt) {
     name = stem + std::to_string(attempt);
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
@@ -91,6 +140,10 @@ void sync_directory(const std::string& path) {
 
 }  // namespace
 
+void remove_temporaries_on_signals() {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, remove_temporaries_and_reraise);
+}
+
 void write_file_atomic(const std::string& path, const std::string& content, const std::vector<std::string>& inputs) {
   AtomicFileSet set;
   for (const std::string& in : inputs) set.protect(in);
@@ -99,8 +152,10 @@ void write_file_atomic(const std::string& path, const std::string& content, cons
 }
 
 AtomicFileSet::~AtomicFileSet() {
-  if (committed_) return;
-  for (const Entry& e : entries_) ::unlink(e.temporary.c_str());
+  for (const Entry& e : entries_) {
+    if (!committed_) ::unlink(e.temporary.c_str());
+    unregister_temporary(e.slot);
+  }
 }
 
 void AtomicFileSet::protect(const std::string& input) {
@@ -119,14 +174,43 @@ void AtomicFileSet::refuse_input(const std::string& target) const {
 
 std::string AtomicFileSet::add(const std::string& path, const std::string& content) {
   refuse_input(path);
-  entries_.push_back({write_temporary(path, content), path});
-  return entries_.back().temporary;
+  const std::string temporary = write_temporary(path, content);
+  entries_.push_back({temporary, path, register_temporary(temporary), std::string(), -1});
+  return temporary;
 }
 
-std::string AtomicFileSet::reserve(const std::string& path) {
-  refuse_input(path);
-  entries_.push_back({write_temporary(path, std::string()), path});
-  return entries_.back().temporary;
+std::string AtomicFileSet::reserve(const std::string& path) { return add(path, std::string()); }
+
+// Before the renames, each existing target gets a hard link under a fresh name, so that
+// a rename failing part-way can put every previous file back (all or nothing, also for
+// the files this commit had already replaced). 0 or an errno value.
+int AtomicFileSet::keep_previous(Entry& e) {
+  if (existing_mode(e.target) < 0) return 0;
+  for (int attempt = 0; attempt < kTemporaryNameAttempts; ++attempt) {
+    const std::string name = e.temporary + ".old" + std::to_string(attempt);
+    if (::link(e.target.c_str(), name.c_str()) == 0) {
+      e.previous = name;
+      e.previous_slot = register_temporary(name);
+      return 0;
+    }
+    if (errno != EEXIST) return errno;
+  }
+  return EEXIST;
+}
+
+void AtomicFileSet::roll_back(std::size_t renamed) {
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    Entry& e = entries_[k];
+    if (k < renamed) {
+      if (e.previous.empty()) ::unlink(e.target.c_str());
+      else std::rename(e.previous.c_str(), e.target.c_str());
+    } else {
+      ::unlink(e.temporary.c_str());
+      if (!e.previous.empty()) ::unlink(e.previous.c_str());
+    }
+    unregister_temporary(e.previous_slot);
+  }
+  committed_ = true;  // nothing left for the destructor
 }
 
 void AtomicFileSet::commit() {
@@ -135,14 +219,24 @@ void AtomicFileSet::commit() {
     refuse_input(e.target);
   }
   for (std::size_t i = 0; i < entries_.size(); ++i) {
+    if (const int err = keep_previous(entries_[i])) {
+      const std::string reason = std::strerror(err);
+      roll_back(0);
+      fail(entries_[i].target, "cannot keep the previous file while the new set is renamed: " + reason);
+    }
+  }
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
     const Entry& e = entries_[i];
     if (std::rename(e.temporary.c_str(), e.target.c_str()) != 0) {
       const std::string reason = std::strerror(errno);
-      for (std::size_t k = 0; k < i; ++k) ::unlink(entries_[k].target.c_str());
-      for (std::size_t k = i; k < entries_.size(); ++k) ::unlink(entries_[k].temporary.c_str());
-      committed_ = true;  // nothing left for the destructor
-      fail(e.target, reason);
+      roll_back(i);
+      fail(e.target, reason + " (no file of the set was changed)");
     }
+  }
+  for (Entry& e : entries_) {
+    if (!e.previous.empty()) ::unlink(e.previous.c_str());
+    unregister_temporary(e.previous_slot);
+    e.previous_slot = -1;
   }
   for (const Entry& e : entries_) sync_directory(e.target);
   committed_ = true;

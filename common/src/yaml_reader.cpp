@@ -228,6 +228,13 @@ std::string YamlReader::choice(const YAML::Node& node, const std::string& path,
   fail(node, message);
 }
 
+void YamlReader::require_dimension(const YAML::Node& node, const std::string& path, const char* what,
+                                   size_t count) const {
+  if (count > kMaxMatrixDimension)
+    fail(node, path + ": " + std::to_string(count) + " " + what + "; a vector or matrix read from a file has at most " +
+                   std::to_string(kMaxMatrixDimension) + " (checked before any memory is allocated)");
+}
+
 Eigen::VectorXd YamlReader::vector(const YAML::Node& node, const std::string& path,
                                    Eigen::Index size) const {
   const std::string expected =
@@ -237,6 +244,7 @@ Eigen::VectorXd YamlReader::vector(const YAML::Node& node, const std::string& pa
   const auto n = static_cast<Eigen::Index>(node.size());
   if (size >= 0 && n != size)
     fail(node, path + ": expected " + expected + ", got " + std::to_string(n));
+  require_dimension(node, path, "entries", node.size());
   Eigen::VectorXd v(n);
   for (Eigen::Index i = 0; i < n; ++i)
     v(i) = finite_number(node[static_cast<size_t>(i)], path + " entry " + std::to_string(i + 1));
@@ -249,7 +257,8 @@ Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& pa
     check_map(node, path, {"diag"});
     const YAML::Node diag = node["diag"];
     if (!diag) fail(node, path + ": missing key '" + child_path(path, "diag") + "'");
-    return vector(diag, child_path(path, "diag")).asDiagonal();
+    return vector(diag, child_path(path, "diag")).asDiagonal();  // n ≤ kMaxMatrixDimension
+
   }
   if (!node.IsSequence())
     fail(node, path + (forms == MatrixForms::RowsOrDiag
@@ -257,6 +266,7 @@ Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& pa
                            : ": expected a matrix as nested rows [[a, b], [c, d]], got ") +
                    node_kind(node));
   if (node.size() == 0) fail(node, path + ": empty matrix ([]); it needs at least 1 row");
+  require_dimension(node, path, "rows", node.size());
   const size_t rows = node.size();
   size_t cols = 0;
   for (size_t i = 0; i < rows; ++i) {
@@ -266,6 +276,7 @@ Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& pa
                     ", not a list (write a matrix as nested rows [[a, b], [c, d]]; "
                     "a column vector is [[a], [b]])");
     if (row.size() == 0) fail(row, path + ": row " + std::to_string(i + 1) + " is empty");
+    require_dimension(row, path + " row " + std::to_string(i + 1), "entries", row.size());
     if (i == 0) cols = row.size();
     if (row.size() != cols)
       fail(row, path + ": ragged rows: row " + std::to_string(i + 1) + " has " +

@@ -1,16 +1,14 @@
 #include "hinf/lmi/sdpa_format.hpp"
 
-#include <cstdio>
+#include "hinf/common/number_text.hpp"
+
 #include <sstream>
 
 namespace hinf::lmi {
 
 namespace {
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+// Shortest text that reads back to the same double (an SDPA reader's strtod is exact).
+std::string num(double v) { return hinf::number_text(v); }
 }  // namespace
 
 std::string to_sdpa_sparse(const LmiProblem& lmi, const Eigen::VectorXd& c,

@@ -15,6 +15,31 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
+// Bounds beyond Ipopt's nlp_lower/upper_bound_inf (±1e19): the variables are free.
+constexpr Number kFreeBound = 1e20;
+// λ² counts as progress when it falls below this fraction of the best so far.
+constexpr double kProgressFactor = 0.5;
+// The exact-Newton bound λ₊ ≤ (λ/(1 − λ))² is tested on full steps taken from
+// λ² < kQuadraticRegionLambda2 (λ < 1/2), and broken when λ₊² exceeds it this many times.
+constexpr double kQuadraticRegionLambda2 = 0.25;
+constexpr double kNewtonBoundSlack = 4.0;
+// Giving up: no progress for give_up_iterations while λ² < kNearCentreLambda2, or
+// while the Hessian has turned numerically indefinite kIndefiniteLimit times.
+constexpr double kNearCentreLambda2 = 1.0;
+constexpr int kIndefiniteLimit = 2;
+// Ipopt's own convergence tests are set below anything reachable: the Newton-decrement
+// test of the intermediate callback ends every centring.
+constexpr Number kIpoptTolerance = 1e-14;
+// Ipopt refuses max_cpu_time <= 0; a centring without time left gets this (s).
+constexpr Number kMinimumCpuTime = 1e-3;
+// Ipopt's derivative checker (tests only): forward-difference step and relative tolerance.
+constexpr Number kDerivativeTestPerturbation = 1e-7;
+constexpr Number kDerivativeTestTolerance = 1e-5;
+constexpr Number kIpoptDefaultPerturbationRadius = 10.0;
+// MUMPS's workspace over-allocation (%): the Newton matrix is dense, and the default
+// 1000 % (zeroed at every factorisation) costs more than the factorisation itself.
+constexpr Index kMumpsMemPercent = 10;
+
 class CenteringTnlp : public Ipopt::TNLP {
  public:
   CenteringTnlp(LogDetBarrier& b, const Eigen::VectorXd& z0, const CenteringOptions& o)
@@ -31,8 +56,8 @@ class CenteringTnlp : public Ipopt::TNLP {
   }
   bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index, Number*, Number*) override {
     for (Index i = 0; i < n; ++i) {
-      x_l[i] = -1e20;  // below nlp_lower_bound_inf: free
-      x_u[i] = 1e20;
+      x_l[i] = -kFreeBound;
+      x_u[i] = kFreeBound;
     }
     return true;
   }
@@ -97,9 +122,9 @@ class CenteringTnlp : public Ipopt::TNLP {
         return false;
       }
       // a full step from λ < 1/2 that broke the exact-Newton bound (CenteringOptions)
-      if (opt_.stop_on_inexact_newton && alpha_pr == 1.0 && prev_lambda2_ < 0.25) {
+      if (opt_.stop_on_inexact_newton && alpha_pr == 1.0 && prev_lambda2_ < kQuadraticRegionLambda2) {
         const double lp = std::sqrt(prev_lambda2_), bound = std::pow(lp / (1 - lp), 4);
-        if (l2 > 4 * bound) {
+        if (l2 > kNewtonBoundSlack * bound) {
           inexact_ = true;
           return false;
         }
@@ -115,7 +140,7 @@ class CenteringTnlp : public Ipopt::TNLP {
         smallest_lambda2_ = l2;
         smallest_z_ = last_grad_z_;
       }
-      if (l2 < 0.5 * best_lambda2_) {
+      if (l2 < kProgressFactor * best_lambda2_) {
         best_lambda2_ = l2;
         best_iter_ = iter;
       } else if (iter - best_iter_ >= opt_.stall_iterations && smallest_lambda2_ <= opt_.lambda2_accept) {
@@ -128,7 +153,9 @@ class CenteringTnlp : public Ipopt::TNLP {
     // near the centre, or while the Hessian keeps turning numerically indefinite
     // (gᵀH⁻¹g < 0): stop, and let the caller retry with a shorter step in t or fall
     // back to its last centred point.
-    if (iter - best_iter_ >= opt_.give_up_iterations && (best_lambda2_ < 1.0 || indefinite_ >= 2)) return false;
+    if (iter - best_iter_ >= opt_.give_up_iterations &&
+        (best_lambda2_ < kNearCentreLambda2 || indefinite_ >= kIndefiniteLimit))
+      return false;
     return true;
   }
   void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*,
@@ -168,14 +195,12 @@ IpoptCentering::IpoptCentering() : impl_(new Impl) {
   o.SetStringValue("sb", "yes");
   o.SetStringValue("hessian_approximation", "exact");
   o.SetStringValue("nlp_scaling_method", "none");  // Newton is affine invariant; we scale
-  o.SetNumericValue("tol", 1e-14);                 // our Newton-decrement test stops Ipopt
-  o.SetNumericValue("dual_inf_tol", 1e-14);
+  o.SetNumericValue("tol", kIpoptTolerance);  // our Newton-decrement test stops Ipopt
+  o.SetNumericValue("dual_inf_tol", kIpoptTolerance);
   o.SetIntegerValue("acceptable_iter", 0);
   o.SetStringValue("linear_solver", "mumps");
   o.SetStringValue("check_derivatives_for_naninf", "no");
-  // The Newton matrix is dense: MUMPS's default 1000 % workspace over-allocation
-  // (zeroed at every factorisation) costs more than the factorisation itself.
-  o.SetIntegerValue("mumps_mem_percent", 10);
+  o.SetIntegerValue("mumps_mem_percent", kMumpsMemPercent);
   // The matrix is the barrier Hessian (positive definite): no MUMPS scaling. Measured:
   // scaling costs time at every factorisation and, late on the path, more Newton
   // iterations (random n = 10: 127 with, 87 without; docs/benchmarks.md).
@@ -192,11 +217,11 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
                                     const CenteringOptions& opt) {
   auto& o = *impl_->app->Options();
   o.SetIntegerValue("max_iter", opt.max_iterations);
-  o.SetNumericValue("max_cpu_time", opt.max_cpu_time > 0 ? opt.max_cpu_time : 1e-3);
+  o.SetNumericValue("max_cpu_time", opt.max_cpu_time > 0 ? opt.max_cpu_time : kMinimumCpuTime);
   if (opt.derivative_test) {
     o.SetStringValue("derivative_test", "second-order");
-    o.SetNumericValue("derivative_test_perturbation", 1e-7);
-    o.SetNumericValue("derivative_test_tol", 1e-5);
+    o.SetNumericValue("derivative_test_perturbation", kDerivativeTestPerturbation);
+    o.SetNumericValue("derivative_test_tol", kDerivativeTestTolerance);
     // check at the given point: a random perturbation could leave the LMI cone
     o.SetNumericValue("point_perturbation_radius", 0.0);
     o.SetIntegerValue("print_level", 4);
@@ -206,7 +231,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   if (opt.derivative_test) {
     o.SetStringValue("derivative_test", "none");
     o.SetIntegerValue("print_level", 0);
-    o.SetNumericValue("point_perturbation_radius", 10.0);  // Ipopt's default
+    o.SetNumericValue("point_perturbation_radius", kIpoptDefaultPerturbationRadius);
   }
   CenteringResult r;
   r.z = tnlp->z_.size() == z0.size() ? tnlp->z_ : z0;

@@ -5,22 +5,20 @@
 #include <hinf/synth/gains_output.hpp>
 #include <hinf/synth/synthesis.hpp>
 
-#include <fstream>
+#include <hinf/common/input_file.hpp>
+
 #include <iostream>
-#include <sstream>
 
 namespace hinf::sim {
 
 ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
   ObtainedGains out;
   if (!source.gains_path.empty()) {
-    const auto file = hinf::runtime_yaml::load_gains_file(source.gains_path);
+    // read once: the bytes parsed are the bytes copied into the run directory
+    out.gains_yaml = hinf::read_input_file(source.gains_path, "gains file", hinf::kMaxGainsBytes);
+    const auto file = hinf::runtime_yaml::parse_gains_yaml(out.gains_yaml, source.gains_path);
     out.gains = {file.A_F, file.B_F, file.C_F};
     out.gamma = file.gamma;
-    std::ifstream in(source.gains_path, std::ios::binary);
-    std::ostringstream os;
-    os << in.rdbuf();
-    out.gains_yaml = os.str();
     out.origin = "gains file " + source.gains_path;
     return out;
   }

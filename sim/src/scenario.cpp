@@ -1,8 +1,21 @@
 #include "hinf/sim/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "hinf/common/number_text.hpp"
+
 namespace hinf::sim {
+
+std::string timing_problem(double duration, double sample_time) {
+  const double ratio = duration / sample_time;
+  if (!(ratio <= kMaxSimulationSteps))
+    return "is " + hinf::number_text(ratio) + " sample times of " + hinf::number_text(sample_time) +
+           " s; a run has at most " + hinf::number_text(kMaxSimulationSteps) + " samples";
+  if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
+    return "must be a whole number of sample times (" + hinf::number_text(sample_time) + " s)";
+  return "";
+}
 
 long Scenario::steps() const { return std::lround(duration / sample_time) + 1; }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "hinf/common/error.hpp"
+#include "hinf/common/input_file.hpp"
 #include "hinf/common/number_text.hpp"
 #include "hinf/common/yaml_reader.hpp"
 
@@ -37,6 +38,11 @@ const Keys kNoiseKeys[] = {{"type", "sigma"},
 const Keys kAnyNoiseKey{"type", "sigma", "time_constant", "dof", "probability", "magnitude",
                         "energy", "frequency", "phase", "start", "end"};
 
+// A standard deviation enters the filters squared (R, P₀): above this its square and
+// the filters' products of it overflow (a 1e100 m noise is no sensor either).
+constexpr double kMaxSigma = 1e100;
+constexpr const char* kSigmaRule = "must be <= 1e100 (its square enters the filters' covariances)";
+
 // The ℓ₂-bounded window of a sinusoid or a pulse.
 void read_window(const YamlMap& n, NoiseComponent& c) {
   n.required("energy", "ℓ₂ energy Σ d(k)² over the window");
@@ -57,6 +63,7 @@ NoiseComponent read_noise_component(const YamlReader& reader, const YAML::Node& 
   NoiseComponent c;
   c.kind = static_cast<NoiseKind>(index);
   c.sigma = n.nonnegative("sigma", 0.0);
+  if (c.sigma > kMaxSigma) n.fail_value("sigma", c.sigma, kSigmaRule);
   switch (c.kind) {
     case NoiseKind::GaussMarkov:
       n.required("time_constant", "s");
@@ -97,10 +104,8 @@ void read_timing(const YamlMap& top, Scenario& s) {
   top.required("duration", "s");
   s.duration = top.positive("duration");
   s.sample_time = top.positive("sample_time", s.sample_time);
-  const double ratio = s.duration / s.sample_time;
-  if (std::fabs(ratio - std::round(ratio)) > 1e-6 * std::max(1.0, ratio))
-    top.fail_value("duration", s.duration,
-                   "must be a whole number of sample times (" + number_text(s.sample_time) + " s)");
+  const std::string problem = timing_problem(s.duration, s.sample_time);
+  if (!problem.empty()) top.fail_value("duration", s.duration, problem);
   s.chaser_mass = top.positive("chaser_mass", s.chaser_mass);
   s.plots = top.boolean("plots", s.plots);
 }
@@ -163,9 +168,9 @@ void read_estimate(const YamlMap& top, Scenario& s) {
     s.initial_sigma = e.vector("sigma", 6);
     const YAML::Node sigma = e.get("sigma");
     for (int i = 0; i < 6; ++i)
-      if (!(s.initial_sigma(i) > 0))
+      if (!(s.initial_sigma(i) > 0) || s.initial_sigma(i) > kMaxSigma)
         e.reader().fail(sigma[i], e.path_of("sigma") + " entry " + std::to_string(i + 1) + " = " +
-                                      number_text(s.initial_sigma(i)) + ": must be > 0");
+                                      number_text(s.initial_sigma(i)) + ": must be > 0 and " + kSigmaRule);
   }
   s.divergence_limit_m = e.positive("divergence_limit", s.divergence_limit_m);
 }
@@ -261,11 +266,7 @@ Scenario parse_scenario(const std::string& text, const std::string& source_name)
 }
 
 Scenario load_scenario(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorCode::InvalidInput, path + ": cannot read the scenario file");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return parse_scenario(os.str(), path);
+  return parse_scenario(read_input_file(path, "scenario", kMaxScenarioBytes), path);
 }
 
 }  // namespace hinf::sim

@@ -14,9 +14,13 @@ namespace {
 using Eigen::MatrixXd;
 namespace hill = hinf::models::hill;
 
-// Error(InvalidInput) "KEY<what>", naming the field by its key path (empty: no key).
-[[noreturn]] void fail(const std::string& key, const std::string& what) {
-  throw Error(ErrorCode::InvalidInput, key + what, key);
+constexpr double kPi = 3.14159265358979323846;
+
+// Error(InvalidInput) "FIELD<what>", naming the HillPlantSpec field; a reader re-keys it
+// to where the field came from (Error::rekeyed). An empty field: a plain message.
+[[noreturn]] void fail(const std::string& field, const std::string& what) {
+  if (field.empty()) throw Error(ErrorCode::InvalidInput, what);
+  throw Error::invalid_field(field, what);
 }
 
 std::string dims(const MatrixXd& M) {
@@ -57,6 +61,21 @@ hill::Matrix6 closed_loop_A(const HillPlantSpec& model, double omega) {
   return hill::continuous_A(omega) + hill::input_matrix(model.chaser_mass) * control_gain(model);
 }
 
+// The discrete model must exist in floating point: a sample time so long that exp(A_c·T)
+// or Γ overflows has no discrete plant, and one for which Γ·H_a vanishes would silently
+// drop the uncertainty (docs/maths.md §9.5). Named by the Hill fields that set them.
+void require_representable(const HillPlantSpec& model, const Plant& plant) {
+  const bool finite = plant.A.allFinite() && plant.H.allFinite() && plant.E.allFinite();
+  const bool lost_uncertainty = model.delta_bar > 0 && (plant.H.isZero(0.0) || plant.E.isZero(0.0));
+  if (finite && !lost_uncertainty) return;
+  fail("sample_time", " = " + number_text(model.sample_time) + ": the discrete Hill model at orbital_rate = " +
+                          number_text(model.orbital_rate) + " rad/s " +
+                          (finite ? "loses its uncertainty channel Γ·H_a (it rounds to zero)"
+                                  : "is not finite (exp(A_c·T) or Γ overflows)") +
+                          "; take the filter's sample period, a small fraction of the orbit period 2π/ω = " +
+                          number_text(2 * kPi / model.orbital_rate) + " s (docs/maths.md §9.5)");
+}
+
 }  // namespace
 
 MatrixXd hill_uncertainty_F(double delta, double delta_bar) {
@@ -69,35 +88,39 @@ MatrixXd hill_uncertainty_F(double delta, double delta_bar) {
 }
 
 void validate_hill_model(const HillPlantSpec& model) {
-  require_positive("hill.orbital_rate", model.orbital_rate, "rad/s");
-  require_positive("hill.chaser_mass", model.chaser_mass, "kg");
-  require_positive("hill.sample_time", model.sample_time, "s");
+  require_positive("orbital_rate", model.orbital_rate, "rad/s");
+  require_positive("chaser_mass", model.chaser_mass, "kg");
+  if (!std::isfinite(1.0 / model.chaser_mass))
+    fail("chaser_mass", " = " + number_text(model.chaser_mass) +
+                            ": too small, 1/chaser_mass (the thrust input matrix G₀, docs/maths.md §9.4) "
+                            "is not finite");
+  require_positive("sample_time", model.sample_time, "s");
   if (!std::isfinite(model.delta_bar) || model.delta_bar < 0 || model.delta_bar >= 10)
-    fail("hill.delta_bar", " = " + number_text(model.delta_bar) +
+    fail("delta_bar", " = " + number_text(model.delta_bar) +
          ": must be in [0, 10) (relative uncertainty of the orbital rate)");
 
   if (model.K.size() > 0 && (model.K.rows() != 3 || model.K.cols() != 6))
-    fail("hill.K", ": expected 3x6 (3 thrust axes x 6 states), got " + dims(model.K));
-  require_finite_entries(model.K, "hill.K");
+    fail("K", ": expected 3x6 (3 thrust axes x 6 states), got " + dims(model.K));
+  require_finite_entries(model.K, "K");
 
   if (model.B.rows() != 6 || model.B.cols() < 1)
-    fail("hill.B", ": expected 6 rows (the Hill state) and at least 1 column, got " + dims(model.B));
-  require_finite_entries(model.B, "hill.B");
+    fail("B", ": expected 6 rows (the Hill state) and at least 1 column, got " + dims(model.B));
+  require_finite_entries(model.B, "B");
 
   const MatrixXd C = measurement_matrix(model);
   if (C.cols() != 6 || C.rows() < 1)
-    fail("hill.C", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(C));
-  require_finite_entries(C, "hill.C");
+    fail("C", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(C));
+  require_finite_entries(C, "C");
 
   if (model.D.rows() != C.rows() || model.D.cols() < 1)
-    fail("hill.D", ": expected " + std::to_string(C.rows()) +
-         " rows (m from hill.C) and at least 1 column, got " + dims(model.D));
-  require_finite_entries(model.D, "hill.D");
+    fail("D", ": expected " + std::to_string(C.rows()) +
+         " rows (m from C) and at least 1 column, got " + dims(model.D));
+  require_finite_entries(model.D, "D");
 
   const MatrixXd L = estimated_signal_matrix(model);
   if (L.cols() != 6 || L.rows() < 1)
-    fail("hill.L", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(L));
-  require_finite_entries(L, "hill.L");
+    fail("L", ": expected 6 columns (the Hill state) and at least 1 row, got " + dims(L));
+  require_finite_entries(L, "L");
 }
 
 Plant build_hill_plant(const HillPlantSpec& model) {
@@ -118,6 +141,7 @@ Plant build_hill_plant(const HillPlantSpec& model) {
     plant.H = MatrixXd::Zero(6, 0);
     plant.E = MatrixXd::Zero(0, 6);
   }
+  require_representable(model, plant);
   validate_plant(plant);
   return plant;
 }

@@ -1,5 +1,5 @@
 // Admissible ranges of the solver settings (settings.hpp). Each message names the field
-// as it is spelt in a config's `solver:` section, and the offending value.
+// (as a config's `solver:` section spells it) and the offending value.
 #include <cmath>
 #include <string>
 
@@ -15,9 +15,9 @@ namespace {
 // non-strict (docs/maths.md [D3]).
 constexpr double kSolverTolerance = 1e-14;
 
+// Names the Settings field; the config reader re-keys it to "solver.<field>".
 [[noreturn]] void fail(const char* field, const std::string& value, const std::string& why) {
-  const std::string key = std::string("solver.") + field;
-  throw Error(ErrorCode::InvalidInput, key + " = " + value + ": " + why, key);
+  throw Error::invalid_field(field, " = " + value + ": " + why);
 }
 
 void require_finite(const char* field, double v) {

@@ -15,7 +15,6 @@
 #include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/sdp/dual_bound.hpp"
-#include "hinf/certify/balance.hpp"
 #include "theorem1.hpp"
 
 namespace hinf::synth {
@@ -36,21 +35,17 @@ void preflight(const Plant& plant, const Settings& settings) {
   // has no strictly feasible point with g > 0 that the solver could approach.
   if (plant.B.isZero(0.0))
     throw Error(ErrorCode::Infeasible,
-                "ill-posed: system.B is zero, so the state is never excited and the optimal bound is γ* = 0 "
+                "ill-posed: the process-noise matrix B is zero, so the state is never excited and the optimal bound is γ* = 0 "
                 "(the zero filter is exact); nothing to synthesise");
   if (plant.L.isZero(0.0))
     throw Error(ErrorCode::Infeasible,
-                "ill-posed: system.L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
-  const Eigen::VectorXcd ev = certify::balanced_eigenvalues(plant.A);
-  int worst = 0;
-  for (int i = 1; i < ev.size(); ++i)
-    if (std::abs(ev(i)) > std::abs(ev(worst))) worst = i;
-  const double rho = std::abs(ev(worst));
+                "ill-posed: the estimated-output matrix L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
+  const std::complex<double> worst = certify::dominant_eigenvalue(plant.A);
+  const double rho = std::abs(worst);
   if (!(rho < 1.0)) {
     throw Error(ErrorCode::Infeasible,
                 "plant is not Schur stable: spectral radius of A is " + fmt(rho) + " (eigenvalue " +
-                    fmt(ev(worst).real()) + (ev(worst).imag() >= 0 ? " + " : " - ") +
-                    fmt(std::abs(ev(worst).imag())) +
+                    fmt(worst.real()) + (worst.imag() >= 0 ? " + " : " - ") + fmt(std::abs(worst.imag())) +
                     "i); the filtering error contains the plant state, so no filter can make it "
                     "stable (docs/maths.md §2.5)");
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hinf/certify/error_system.hpp"
 #include "hinf/common/error.hpp"
 
 namespace hinf::synth {
@@ -113,16 +114,10 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
   const int n2 = 2 * n;
-  // error system, docs/maths.md (9)–(11)
-  MatrixXd A0 = MatrixXd::Zero(n2, n2);
-  A0.topLeftCorner(n, n) = P.A;
-  A0.bottomLeftCorner(n, n) = F.B_F * P.C;
-  A0.bottomRightCorner(n, n) = F.A_F;
-  MatrixXd Bb = MatrixXd::Zero(n2, p + q);
-  Bb.topLeftCorner(n, p) = P.B;
-  Bb.bottomRightCorner(n, q) = F.B_F * P.D;
-  MatrixXd Cb(l, n2);
-  Cb << P.L, -F.C_F;
+  const StateSpace es = certify::error_system(P, F);  // Ā, B̄, C̄: docs/maths.md (9)–(11)
+  const MatrixXd& A0 = es.A;
+  const MatrixXd& Bb = es.B;
+  const MatrixXd& Cb = es.C;
   std::vector<int> blocks{n2, n2, p + q, l};
   if (unc) blocks.push_back(P.j());
   AnalysisLmi A;

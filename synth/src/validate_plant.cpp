@@ -10,9 +10,10 @@
 namespace hinf::synth {
 namespace {
 
-// Error(InvalidInput) "KEY<what>", naming the matrix by its key path.
-[[noreturn]] void fail(const std::string& key, const std::string& what) {
-  throw Error(ErrorCode::InvalidInput, key + what, key);
+// Error(InvalidInput) "NAME<what>", naming the matrix as docs/maths.md (1)–(4) does; a
+// reader re-keys it to where the matrix came from (Error::rekeyed).
+[[noreturn]] void fail(const std::string& name, const std::string& what) {
+  throw Error::invalid_field(name, what);
 }
 
 std::string dims(const Eigen::MatrixXd& M) {
@@ -38,52 +39,60 @@ void require_cols(const Eigen::MatrixXd& M, const std::string& name, Eigen::Inde
          std::to_string(M.cols()));
 }
 
+// The synthesis squares the data (γ², EᵀE, the LMI's products): an entry above this
+// would overflow there, whatever the units chosen for the signals.
+constexpr double kMaxEntryMagnitude = 1e150;
+
 void require_finite(const Eigen::MatrixXd& M, const std::string& name) {
   for (Eigen::Index j = 0; j < M.cols(); ++j)
-    for (Eigen::Index i = 0; i < M.rows(); ++i)
-      if (!std::isfinite(M(i, j)))
-        fail(name, ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
-             ") = " + number_text(M(i, j)) + " is not finite");
+    for (Eigen::Index i = 0; i < M.rows(); ++i) {
+      const std::string entry = ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ") = " +
+                                number_text(M(i, j));
+      if (!std::isfinite(M(i, j))) fail(name, entry + " is not finite");
+      if (std::abs(M(i, j)) > kMaxEntryMagnitude)
+        fail(name, entry + ": magnitude above 1e150, whose square (γ², EᵀE) overflows; express the "
+                           "signals in other units");
+    }
 }
 
 }  // namespace
 
 void validate_plant(const Plant& plant) {
   const Eigen::MatrixXd& A = plant.A;
-  require_nonempty(A, "system.A", "n >= 1");
+  require_nonempty(A, "A", "n >= 1");
   if (A.rows() != A.cols())
-    fail("system.A", ": must be square (n x n), got " + dims(A));
+    fail("A", ": must be square (n x n), got " + dims(A));
   const Eigen::Index n = A.rows();
 
-  require_rows(plant.B, "system.B", n, "n from A");
-  require_nonempty(plant.B, "system.B", "p >= 1 noise inputs");
-  require_cols(plant.C, "system.C", n, "n from A");
-  require_nonempty(plant.C, "system.C", "m >= 1 measurements");
-  require_rows(plant.D, "system.D", plant.C.rows(), "m from C");
-  require_nonempty(plant.D, "system.D", "q >= 1 noise inputs");
-  require_cols(plant.L, "system.L", n, "n from A");
-  require_nonempty(plant.L, "system.L", "l >= 1 estimated signals");
+  require_rows(plant.B, "B", n, "n from A");
+  require_nonempty(plant.B, "B", "p >= 1 noise inputs");
+  require_cols(plant.C, "C", n, "n from A");
+  require_nonempty(plant.C, "C", "m >= 1 measurements");
+  require_rows(plant.D, "D", plant.C.rows(), "m from C");
+  require_nonempty(plant.D, "D", "q >= 1 noise inputs");
+  require_cols(plant.L, "L", n, "n from A");
+  require_nonempty(plant.L, "L", "l >= 1 estimated signals");
 
   const bool has_H = plant.H.size() > 0;
   const bool has_E = plant.E.size() > 0;
   if (has_H && !has_E)
-    fail("uncertainty.H", " is given (" + dims(plant.H) + ") but uncertainty.E is empty: "
+    fail("H", " is given (" + dims(plant.H) + ") but E is empty: "
          "Delta A = H F E needs both");
   if (has_E && !has_H)
-    fail("uncertainty.E", " is given (" + dims(plant.E) + ") but uncertainty.H is empty: "
+    fail("E", " is given (" + dims(plant.E) + ") but H is empty: "
          "Delta A = H F E needs both");
   if (has_H) {
-    require_rows(plant.H, "uncertainty.H", n, "n from A");
-    require_cols(plant.E, "uncertainty.E", n, "n from A");
+    require_rows(plant.H, "H", n, "n from A");
+    require_cols(plant.E, "E", n, "n from A");
   }
 
-  require_finite(A, "system.A");
-  require_finite(plant.B, "system.B");
-  require_finite(plant.C, "system.C");
-  require_finite(plant.D, "system.D");
-  require_finite(plant.L, "system.L");
-  require_finite(plant.H, "uncertainty.H");
-  require_finite(plant.E, "uncertainty.E");
+  require_finite(A, "A");
+  require_finite(plant.B, "B");
+  require_finite(plant.C, "C");
+  require_finite(plant.D, "D");
+  require_finite(plant.L, "L");
+  require_finite(plant.H, "H");
+  require_finite(plant.E, "E");
 }
 
 }  // namespace hinf::synth

@@ -307,6 +307,36 @@ TEST(CodegenCompiled, CppcheckClean) {
   }
 }
 
+// Another prefix's files in the same directory are never replaced, and a prefix that
+// differs from one there only in case is refused (shared macros and include guards).
+TEST(CodegenFiles, OtherPrefixesInTheDirectoryAreProtected) {
+  TempDir dir;
+  CodegenOptions nav;
+  nav.prefix = "nav";
+  hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), nav), dir.path());
+  const std::string before = hinf::test::read_text(dir / "nav_vectors.h");
+  for (const char* other : {"Nav", "NAV", "nav_vectors", "nav_check"}) {
+    CodegenOptions o;
+    o.prefix = other;
+    try {
+      hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), o), dir.path());
+      ADD_FAILURE() << "prefix " << other << " accepted beside 'nav'";
+    } catch (const hinf::Error& e) {
+      EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
+      EXPECT_NE(std::string(e.what()).find("generated for prefix 'nav'"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(hinf::test::read_text(dir / "nav_vectors.h"), before);
+  EXPECT_FALSE(std::filesystem::exists(dir / "Nav.h"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "nav_vectors.c"));
+  // the same prefix again replaces its own files; an unrelated one sits beside them
+  EXPECT_NO_THROW(hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), nav), dir.path()));
+  CodegenOptions guidance;
+  guidance.prefix = "guidance";
+  EXPECT_NO_THROW(
+      hinf::codegen::write_generated_files(hinf::codegen::generate_c(paper_gains(), guidance), dir.path()));
+}
+
 TEST(CodegenCompiled, TwoFiltersLinkIntoOneBinary) {
   TempDir dir;
   CodegenOptions a;

@@ -185,7 +185,7 @@ TEST(GainsFile, LoadReportsUnreadableFiles) {
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_HAS(std::string(e.what()), dir / "missing.yaml");
-    EXPECT_HAS(std::string(e.what()), "no such file");
+    EXPECT_HAS(std::string(e.what()), "No such file");
   }
   try {
     load_gains_file(dir.path());

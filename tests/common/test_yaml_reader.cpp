@@ -118,6 +118,30 @@ TEST(OneStrictReader, UnknownKeyIsRefusedIdenticallyWithASuggestion) {
                  "unknown key 'metrics.converge_treshold' (did you mean 'converge_threshold'?)");
 }
 
+TEST(OneStrictReader, ExtraDocumentsAreRefusedIdentically) {
+  // the location is the second document's first node
+  expect_refused(kConfig, kConfig.valid + "---\n" + kConfig.valid, 10, 1, "2 YAML documents");
+  expect_refused(kGains, kGains.valid + "---\n" + kGains.valid, 9, 1, "2 YAML documents");
+  expect_refused(kScenario, kScenario.valid + "---\n" + kScenario.valid, 6, 1, "2 YAML documents");
+}
+
+// A few kilobytes must not ask for gigabytes: declared sizes are capped before any
+// matrix is allocated ({diag: [...]} of n entries is n×n; YAML aliases repeat rows).
+TEST(OneStrictReader, OversizedMatricesAreRefusedBeforeAllocation) {
+  std::string many = "0.5";
+  for (int i = 1; i < 30000; ++i) many += ", 0.5";
+  expect_refused(kConfig, replaced(kConfig.valid, "A: [[0.5, 0.1], [0, 0.4]]", "A: {diag: [" + many + "]}"), 2, 13,
+                 "system.A.diag: 30000 entries; a vector or matrix read from a file has at most 1000");
+  std::string rows = "[&r [" + many + "]";
+  for (int i = 1; i < 3; ++i) rows += ", *r";
+  expect_refused(kGains, replaced(kGains.valid, "A_F: [[0.5]]", "A_F: " + rows + "]"), 5, 9,
+                 "filter.A_F row 1: 30000 entries; a vector or matrix read from a file has at most 1000");
+  std::string aliased = "[&r [0.5]";
+  for (int i = 1; i < 1001; ++i) aliased += ", *r";
+  expect_refused(kGains, replaced(kGains.valid, "A_F: [[0.5]]", "A_F: " + aliased + "]"), 5, 8,
+                 "filter.A_F: 1001 rows; a vector or matrix read from a file has at most 1000");
+}
+
 // ---- the reader's own vocabulary (what the three formats share) --------------------
 
 hinf::YamlMap map_of(const hinf::YamlReader& reader, const YAML::Node& node,

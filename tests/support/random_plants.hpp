@@ -2,6 +2,7 @@
 // entries drawn column by column, so a seed gives the same matrix everywhere).
 #pragma once
 #include <Eigen/Dense>
+#include <algorithm>
 #include <random>
 
 #include "hinf/models/plant.hpp"
@@ -17,6 +18,22 @@ Eigen::MatrixXd random_matrix(Engine& g, int r, int c) {
   for (int j = 0; j < c; ++j)
     for (int i = 0; i < r; ++i) M(i, j) = N(g);
   return M;
+}
+
+// A random symmetric n×n matrix (M + Mᵀ)/2 and a random n-vector, drawn as random_matrix.
+template <class Engine>
+Eigen::MatrixXd random_symmetric(Engine& g, int n) {
+  const Eigen::MatrixXd M = random_matrix(g, n, n);
+  return 0.5 * (M + M.transpose());
+}
+template <class Engine>
+Eigen::VectorXd random_vector(Engine& g, int n) {
+  return random_matrix(g, n, 1);
+}
+
+// max |A − B| relative to max(1, max |B|): the comparison of the derivative tests.
+inline double relative_error(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  return (A - B).cwiseAbs().maxCoeff() / std::max(1.0, B.cwiseAbs().maxCoeff());
 }
 
 // Uncertain plant of order n with A + H F E Schur for every ‖F‖ ≤ 1: ‖A‖₂ = 0.6 and

@@ -253,6 +253,15 @@ TEST(BadConfig, MissingRequiredKeys) {
                  {"exactly one of 'hill.orbital_rate'", "'hill.orbital_period'"});
 }
 
+// The Hill builder names its fields; the reader re-keys them to hill.<field> at the
+// key's file:line:col (the values that overflowed the discrete model, issue 13).
+TEST(BadConfig, HillValuesNamedByTheirKeys) {
+  expect_invalid(hill_with("  chaser_mass: 4.9e-324\n", "chaser_mass"),
+                 {"bad.yaml:", "hill.chaser_mass = 5e-324: too small"});
+  expect_invalid(hill_with("  sample_time: 1e300\n  discretisation: zoh\n", "sample_time"),
+                 {"hill.sample_time = 1e300: the discrete Hill model"});
+}
+
 TEST(BadConfig, MatrixShapes) {
   expect_invalid_file(kSource + "/tests/data/bad-configs/ragged.yaml",
                       {"ragged.yaml:5:7", "system.A: ragged rows: row 2 has 2 entries, row 1 has 3"});
@@ -321,7 +330,7 @@ TEST(BadConfig, AbsurdPhysicalValues) {
   expect_invalid(hill_with("  K: [[1, 2, 3, 4, 5, 6], [1, 2, 3, 4, 5, 6]]\n"),
                  {"hill.K: expected 3x6", "got 2x6"});
   expect_invalid(hill_with("  D: {diag: [0.1, 0.1]}\n", "  D:"),
-                 {"hill.D: expected 3 rows (m from hill.C)", "got 2x2"});
+                 {"hill.D: expected 3 rows (m from C)", "got 2x2"});
   expect_invalid(hill_with("  discretisation: eular\n"),
                  {"hill.discretisation = 'eular'", "did you mean 'euler'?"});
 }
@@ -355,7 +364,7 @@ TEST(BadConfig, EmptyMissingAndNonMapInputs) {
   expect_invalid("", {"bad.yaml: empty config"});
   expect_invalid("# only a comment\n", {"bad.yaml: empty config"});
   expect_invalid_file(kSource + "/tests/data/bad-configs/no-such-file.yaml",
-                      {"cannot open config '", "no-such-file.yaml", "No such file"});
+                      {"cannot read config '", "no-such-file.yaml", "No such file"});
   expect_invalid_file(kSource + "/tests/data/bad-configs",
                       {"bad-configs", "is a directory"});
   expect_invalid("- system\n- hill\n", {"the top level must be a map", "a list"});

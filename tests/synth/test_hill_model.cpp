@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "hinf/synth/config.hpp"
@@ -226,36 +227,51 @@ TEST(HillModel, ZohUncertaintyModelIsFirstOrderAccurate) {
   }
 }
 
-TEST(HillModel, AbsurdPhysicalValuesAreRefusedNamingKeyAndValue) {
+// The library names the HillPlantSpec field (Error::key() too); the config reader
+// re-keys it to hill.<field> (test_config.cpp, cli tests).
+TEST(HillModel, AbsurdPhysicalValuesAreRefusedNamingFieldAndValue) {
   struct Case {
     void (*mutate)(HillPlantSpec&);
+    const char* field;
     const char* fragment;
   };
   const Case cases[] = {
-      {[](HillPlantSpec& m) { m.chaser_mass = -5; }, "hill.chaser_mass = -5"},
-      {[](HillPlantSpec& m) { m.chaser_mass = 0; }, "hill.chaser_mass = 0"},
-      {[](HillPlantSpec& m) { m.sample_time = 0; }, "hill.sample_time = 0"},
-      {[](HillPlantSpec& m) { m.orbital_rate = -1e-4; }, "hill.orbital_rate = -0.0001"},
-      {[](HillPlantSpec& m) { m.orbital_rate = INFINITY; }, "hill.orbital_rate = inf"},
-      {[](HillPlantSpec& m) { m.delta_bar = 10; }, "hill.delta_bar = 10"},
-      {[](HillPlantSpec& m) { m.delta_bar = -0.1; }, "hill.delta_bar = -0.1"},
-      {[](HillPlantSpec& m) { m.delta_bar = NAN; }, "hill.delta_bar = nan"},
-      {[](HillPlantSpec& m) { m.K = MatrixXd::Zero(3, 5); }, "hill.K: expected 3x6"},
-      {[](HillPlantSpec& m) { m.B = MatrixXd::Zero(5, 5); }, "hill.B: expected 6 rows"},
-      {[](HillPlantSpec& m) { m.D = MatrixXd::Zero(2, 2); }, "hill.D: expected 3 rows (m from hill.C)"},
-      {[](HillPlantSpec& m) { m.L = MatrixXd::Zero(6, 5); }, "hill.L: expected 6 columns"},
-      {[](HillPlantSpec& m) { m.K(1, 2) = NAN; }, "hill.K: entry (2, 3) = nan"},
+      {[](HillPlantSpec& m) { m.chaser_mass = -5; }, "chaser_mass", "chaser_mass = -5"},
+      {[](HillPlantSpec& m) { m.chaser_mass = 0; }, "chaser_mass", "chaser_mass = 0"},
+      {[](HillPlantSpec& m) { m.chaser_mass = 4.9e-324; }, "chaser_mass", "chaser_mass = 5e-324: too small"},
+      {[](HillPlantSpec& m) { m.sample_time = 0; }, "sample_time", "sample_time = 0"},
+      {[](HillPlantSpec& m) { m.orbital_rate = -1e-4; }, "orbital_rate", "orbital_rate = -0.0001"},
+      {[](HillPlantSpec& m) { m.orbital_rate = INFINITY; }, "orbital_rate", "orbital_rate = inf"},
+      {[](HillPlantSpec& m) { m.delta_bar = 10; }, "delta_bar", "delta_bar = 10"},
+      {[](HillPlantSpec& m) { m.delta_bar = -0.1; }, "delta_bar", "delta_bar = -0.1"},
+      {[](HillPlantSpec& m) { m.delta_bar = NAN; }, "delta_bar", "delta_bar = nan"},
+      {[](HillPlantSpec& m) { m.K = MatrixXd::Zero(3, 5); }, "K", "K: expected 3x6"},
+      {[](HillPlantSpec& m) { m.B = MatrixXd::Zero(5, 5); }, "B", "B: expected 6 rows"},
+      {[](HillPlantSpec& m) { m.D = MatrixXd::Zero(2, 2); }, "D", "D: expected 3 rows (m from C)"},
+      {[](HillPlantSpec& m) { m.L = MatrixXd::Zero(6, 5); }, "L", "L: expected 6 columns"},
+      {[](HillPlantSpec& m) { m.K(1, 2) = NAN; }, "K", "K: entry (2, 3) = nan"},
   };
-  for (const Case& c : cases) {
-    HillPlantSpec m = paper_model(0.05, hinf::models::Discretisation::Euler);
-    c.mutate(m);
-    try {
-      hinf::synth::build_hill_plant(m);
-      ADD_FAILURE() << "accepted: " << c.fragment;
-    } catch (const hinf::Error& e) {
-      EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput) << e.what();
-      EXPECT_NE(std::string(e.what()).find(c.fragment), std::string::npos)
-          << "message '" << e.what() << "' lacks '" << c.fragment << "'";
+  // ZOH only: exp(A_c·T) overflows (Euler's I + A_c·T stays finite and is refused as not
+  // Schur stable, exit 3, by the synthesis's pre-flight).
+  std::vector<Case> all(std::begin(cases), std::end(cases));
+  all.push_back({[](HillPlantSpec& m) {
+                   m.sample_time = 1e300;
+                   m.discretisation = hinf::models::Discretisation::ZeroOrderHold;
+                 },
+                 "sample_time", "sample_time = 1e300: the discrete Hill model"});
+  for (const auto discretisation : {hinf::models::Discretisation::Euler, hinf::models::Discretisation::ZeroOrderHold}) {
+    for (const Case& c : all) {
+      HillPlantSpec m = paper_model(0.05, discretisation);
+      c.mutate(m);
+      try {
+        hinf::synth::build_hill_plant(m);
+        ADD_FAILURE() << "accepted: " << c.fragment;
+      } catch (const hinf::Error& e) {
+        EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput) << e.what();
+        EXPECT_EQ(e.key(), c.field) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind(c.fragment, 0), 0u)
+            << "message '" << e.what() << "' does not start with '" << c.fragment << "'";
+      }
     }
   }
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hinf/common/error.hpp"
+#include "hinf/common/input_file.hpp"
 #include "hinf/common/yaml_reader.hpp"
 
 namespace hinf::runtime_yaml {
@@ -92,9 +93,6 @@ void check_dimensions(const YamlMap& top, const GainsFile& g) {
   }
 }
 
-[[noreturn]] void unreadable(const std::string& path, const std::string& reason) {
-  throw Error(ErrorCode::InvalidInput, path + ": cannot read gains file: " + reason);
-}
 
 }  // namespace
 
@@ -111,16 +109,7 @@ GainsFile parse_gains_yaml(const std::string& text, const std::string& source_na
 }
 
 GainsFile load_gains_file(const std::string& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) unreadable(path, "no such file");
-  if (std::filesystem::is_directory(status)) unreadable(path, "is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) unreadable(path, "cannot open (permissions?)");
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) unreadable(path, "read error");
-  return parse_gains_yaml(buf.str(), path);
+  return parse_gains_yaml(read_input_file(path, "gains file", kMaxGainsBytes), path);
 }
 
 }  // namespace hinf::runtime_yaml

@@ -28,19 +28,28 @@ YAML::Node node_of_key(const YAML::Node& root, const std::string& path) {
   }
 }
 
-// Runs a check that throws Error(InvalidInput) naming a key and prefixes the message
-// with the location of that key in the file.
-template <typename Check>
-void located(const YamlReader& reader, const YAML::Node& root, Check&& check) {
+// Runs a check that throws Error(InvalidInput) naming a field of what was read; re-keys
+// it to the field's key path in the file (key_of(field)) and prefixes the message with
+// the location of that key.
+template <typename Check, typename KeyOf>
+void located(const YamlReader& reader, const YAML::Node& root, KeyOf&& key_of, Check&& check) {
   try {
     check();
   } catch (const Error& e) {
     if (e.code() != ErrorCode::InvalidInput) throw;
-    const YAML::Node at = node_of_key(root, e.key());
+    const Error keyed = e.key().empty() ? e : e.rekeyed(key_of(e.key()));
+    const YAML::Node at = node_of_key(root, keyed.key());
     throw Error(ErrorCode::InvalidInput,
-                (at ? reader.location(at) : reader.source()) + ": " + e.what(), e.key());
+                (at ? reader.location(at) : reader.source()) + ": " + keyed.what(), keyed.key());
   }
 }
+
+// Where each field of the plant, the Hill model and the settings is spelt in a config.
+std::string system_key(const std::string& field) {
+  return (field == "H" || field == "E" ? "uncertainty." : "system.") + field;
+}
+std::string hill_key(const std::string& field) { return "hill." + field; }
+std::string solver_key(const std::string& field) { return "solver." + field; }
 
 }  // namespace
 
@@ -68,15 +77,15 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
   try {
     if (system) {
       config.plant = read_system_section(reader, system, uncertainty);
-      located(reader, root, [&] { validate_plant(config.plant); });
+      located(reader, root, system_key, [&] { validate_plant(config.plant); });
     } else {
       HillPlantSpec model = read_hill_section(reader, hill);
-      located(reader, root, [&] { config.plant = build_hill_plant(model); });
+      located(reader, root, hill_key, [&] { config.plant = build_hill_plant(model); });
       config.hill = std::move(model);
     }
     if (const YAML::Node solver = root["solver"]) {
       config.settings = read_solver_section(reader, solver);
-      located(reader, root, [&] { config.settings.validate(); });
+      located(reader, root, solver_key, [&] { config.settings.validate(); });
     }
   } catch (const YAML::Exception& e) {  // should not happen: every access is checked
     throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());

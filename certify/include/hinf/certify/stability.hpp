@@ -4,6 +4,7 @@
 // Sampling is evidence, not proof: the robust guarantee is the analysis LMI (check 4).
 #pragma once
 #include <Eigen/Dense>
+#include <complex>
 #include <vector>
 
 #include "hinf/models/plant.hpp"
@@ -13,6 +14,10 @@ namespace hinf::certify {
 // ρ(M) = max |λ_i(M)| (0 for an empty matrix). Throws Error(InvalidInput) if M is not
 // square or not finite, Error(NumericalFailure) if the eigenvalue iteration fails.
 double spectral_radius(const Eigen::MatrixXd& M);
+
+// An eigenvalue of largest modulus (the first such in the solver's order), computed
+// balanced; same errors as spectral_radius, and 0 for an empty matrix.
+std::complex<double> dominant_eigenvalue(const Eigen::MatrixXd& M);
 
 struct StabilitySample {
   double max_spectral_radius = 0;  // max over the samples of ρ(Ā(F))

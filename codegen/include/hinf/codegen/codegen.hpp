@@ -29,6 +29,7 @@ struct GeneratedFile {
 };
 
 struct GeneratedFiles {
+  std::string prefix;                // the prefix they were generated for
   std::vector<GeneratedFile> files;  // NAME.h, NAME.c, NAME_vectors.h, NAME_check.c
 };
 
@@ -44,7 +45,11 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
 // Writes every file into `directory` (created if missing). All files are first
 // written to temporary files in `directory` and then renamed, so a failure leaves
 // no partial file behind; none of them replaces one of `inputs` (the same file, by
-// device and inode). Throws Error(InvalidInput) naming the path on failure.
+// device and inode). Files generated there before for another prefix (each carries
+// " * Prefix: NAME") are never replaced, and a prefix that differs from one of them
+// only in case is refused: the two would share macros and include guards (NAV_NX,
+// NAV_H_GENERATED), and one file name on a case-insensitive file system. Throws
+// Error(InvalidInput) naming the path or the other prefix.
 void write_generated_files(const GeneratedFiles& files, const std::string& directory,
                            const std::vector<std::string>& inputs = {});
 

@@ -1,6 +1,6 @@
 // Writing output files without ever leaving a partial one, in one place for every tool.
-// A file is written to a temporary in its own directory (created exclusively, so a planted
-// file or symlink is never followed), flushed to disk (fsync), renamed over the target
+// A file is written to a temporary in its own directory (created exclusively under a
+// random name, so a planted file or symlink is never followed), flushed to disk (fsync), renamed over the target
 // (atomic on POSIX file systems) and the directory is flushed. An existing target must be
 // a regular file; its permission bits are kept; it is never one of the inputs given (the
 // same file by device and inode, whatever the path). Every failure throws
@@ -13,14 +13,21 @@
 
 namespace hinf {
 
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove every live temporary of
+// this process (AtomicFileSet's, and the previous files it keeps during a commit), then
+// die of the signal as before. For the executables' main(); the set of live temporaries
+// is the writer's one piece of process-wide state (a signal handler sees no other).
+void remove_temporaries_on_signals();
+
 void write_file_atomic(const std::string& path, const std::string& content,
                        const std::vector<std::string>& inputs = {});
 
 // Files that appear together: add() writes each one's complete temporary, commit()
 // renames them all into place. Until commit() succeeds the destructor removes every
-// temporary (a set never committed is a set of scoped scratch files); if a rename fails
-// part-way, the files this commit already renamed are
-// removed too (all or nothing).
+// temporary (a set never committed is a set of scoped scratch files). commit() first
+// keeps each existing target under a hard link; if a rename fails part-way, every
+// target is put back as it was (the previous files restored, new ones removed): all or
+// nothing.
 class AtomicFileSet {
  public:
   AtomicFileSet() = default;
@@ -42,12 +49,17 @@ class AtomicFileSet {
  private:
   struct Entry {
     std::string temporary, target;
+    int slot = -1;              // in the signal handler's table
+    std::string previous;       // hard link to the target's previous file, during commit()
+    int previous_slot = -1;
   };
   struct FileId {
     unsigned long long device, inode;
     std::string path;
   };
   void refuse_input(const std::string& target) const;
+  int keep_previous(Entry& e);
+  void roll_back(std::size_t renamed);
   std::vector<Entry> entries_;
   std::vector<FileId> inputs_;
   bool committed_ = false;

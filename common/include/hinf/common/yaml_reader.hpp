@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Dense>
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,12 @@ enum class EmptyMap { Refused, Allowed };
 enum class MatrixForms { RowsOrDiag, RowsOnly };
 
 class YamlMap;
+
+// The largest vector length and matrix row or column count any format reads: checked
+// before allocating, so that a small file ({diag: [30000 numbers]}, or rows repeated by
+// YAML aliases) cannot ask for gigabytes (a 1000×1000 matrix is 8 MB). Far above what
+// the solver takes (docs/benchmarks.md).
+constexpr std::size_t kMaxMatrixDimension = 1000;
 
 class YamlReader {
  public:
@@ -88,6 +95,9 @@ class YamlReader {
  private:
   std::string scalar_text(const YAML::Node& node, const std::string& path,
                           const char* expected) const;
+  // fail() unless count ≤ kMaxMatrixDimension: "<path>: 30000 rows; ... at most 1000".
+  void require_dimension(const YAML::Node& node, const std::string& path, const char* what,
+                         size_t count) const;
   std::string source_;
 };
 

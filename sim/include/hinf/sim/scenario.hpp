@@ -38,6 +38,15 @@ struct FilterSelection {
   std::optional<RekfSettings> rekf;         // REKF, docs/maths.md §13 (knows the applied thrust)
 };
 
+// A run has at most this many samples: the trajectory of every filter is kept in
+// memory (~1 KB a sample), so 1e7 samples is ~10 GB — the most a 24 GB machine runs.
+constexpr double kMaxSimulationSteps = 1e7;
+
+// Why (duration, sample_time) is not a run's timing, or "" if it is: the duration must
+// be a whole number of sample times, and at most kMaxSimulationSteps of them. The one
+// rule of the scenario file and of hinf-sim's --duration.
+std::string timing_problem(double duration, double sample_time);
+
 struct Scenario {
   std::string path;  // the file it was read from (for messages and relative paths)
   // orbit and chaser

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Outputs that must be refused without touching anything (issue 13):
-#   cli_hostile_outputs.sh HINF_SYNTH CONFIG GAINS
+#   hinf_synth_hostile_outputs.sh HINF_SYNTH CONFIG GAINS
 # 1. solve / export-sdpa with -o the config itself (by its path, and by another path to
 #    the same file): exit 2 "is the input file", the config unchanged;
 # 2. codegen writing over its own gains file (named like a generated file): exit 2;

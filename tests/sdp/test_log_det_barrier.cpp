@@ -33,46 +33,40 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using hinf::lmi::LmiProblem;
 using hinf::test::random_matrix;
+using hinf::test::random_symmetric;
+using hinf::test::random_vector;
+using hinf::test::relative_error;
 using hinf::test::random_plant_with_dimensions;
 using hinf::Plant;
 
-MatrixXd rnd_sym(std::mt19937& g, int n) {
-  MatrixXd M = random_matrix(g, n, n);
-  return 0.5 * (M + M.transpose());
-}
 MatrixXd rnd_spd(std::mt19937& g, int n) {
   MatrixXd M = random_matrix(g, n, n);
   return M * M.transpose() + MatrixXd::Identity(n, n);
 }
-VectorXd rnd_vec(std::mt19937& g, int n) { return random_matrix(g, n, 1); }
 
 // Largest |entry| of A − B relative to max(1, ‖B‖_max).
-double rel_err(const MatrixXd& A, const MatrixXd& B) {
-  return (A - B).cwiseAbs().maxCoeff() / std::max(1.0, B.cwiseAbs().maxCoeff());
-}
-
 // Dense checks shared by both LMIs: basis matrices vs differences of evaluate(),
 // gradient/Hessian vs dense traces with the basis matrices, for a random SPD W.
 void check_derivatives_dense(const LmiProblem& L, std::mt19937& g) {
   const int np = L.num_params(), N = L.order();
-  const VectorXd x = rnd_vec(g, np);
+  const VectorXd x = random_vector(g, np);
   const MatrixXd Mx = L.evaluate(x);
   ASSERT_EQ(Mx.rows(), N);
-  EXPECT_LT(rel_err(Mx, Mx.transpose()), 1e-15) << "M(x) not symmetric";
+  EXPECT_LT(relative_error(Mx, Mx.transpose()), 1e-15) << "M(x) not symmetric";
   MatrixXd sum = L.evaluate(VectorXd::Zero(np));
-  EXPECT_LT(rel_err(sum, L.constant()), 1e-15);
+  EXPECT_LT(relative_error(sum, L.constant()), 1e-15);
   std::vector<MatrixXd> Mi(np);
   for (int i = 0; i < np; ++i) {
     Mi[i] = L.basis_matrix(i);
     // M affine: M(e_i) − M(0) = M_i exactly up to round-off
     VectorXd e = VectorXd::Zero(np);
     e(i) = 1.0;
-    EXPECT_LT(rel_err(L.evaluate(e) - L.constant(), Mi[i]), 1e-14) << "basis matrix " << i;
-    EXPECT_LT(rel_err(Mi[i], Mi[i].transpose()), 1e-15);
+    EXPECT_LT(relative_error(L.evaluate(e) - L.constant(), Mi[i]), 1e-14) << "basis matrix " << i;
+    EXPECT_LT(relative_error(Mi[i], Mi[i].transpose()), 1e-15);
     EXPECT_GT(Mi[i].cwiseAbs().maxCoeff(), 0.0) << "parameter " << i << " does not enter M";
     sum += x(i) * Mi[i];
   }
-  EXPECT_LT(rel_err(Mx, sum), 1e-12) << "M(x) != M0 + sum x_i M_i";
+  EXPECT_LT(relative_error(Mx, sum), 1e-12) << "M(x) != M0 + sum x_i M_i";
 
   // the sparse export lists the same matrices
   std::vector<MatrixXd> Ms(np, MatrixXd::Zero(N, N));
@@ -81,7 +75,7 @@ void check_derivatives_dense(const LmiProblem& L, std::mt19937& g) {
     Ms[e.param](e.row, e.col) += e.value;
     if (e.row != e.col) Ms[e.param](e.col, e.row) += e.value;
   }
-  for (int i = 0; i < np; ++i) EXPECT_LT(rel_err(Ms[i], Mi[i]), 1e-14) << "sparse entries of M_" << i;
+  for (int i = 0; i < np; ++i) EXPECT_LT(relative_error(Ms[i], Mi[i]), 1e-14) << "sparse entries of M_" << i;
 
   const MatrixXd W = rnd_spd(g, N) / N;
   VectorXd gr;
@@ -108,78 +102,6 @@ void check_derivatives_dense(const LmiProblem& L, std::mt19937& g) {
       ASSERT_NEAR(H(i, j), Href(i, j), 1e-11 * std::max(1.0, hmax)) << "Hessian (" << i << "," << j << ")";
 }
 
-// ---------------------------------------------------------------- toy LMI
-TEST(LmiLayer, ToyLmiEvaluateMatchesHandAssembly) {
-  std::mt19937 g(11);
-  // blocks 3, 2, 4, 1 (odd and unequal sizes)
-  LmiProblem L({3, 2, 4, 1});
-  const auto X = L.add_symmetric("X", 3);
-  const auto Y = L.add_full("Y", 2, 4);
-  const auto z = L.add_scalar("z");
-  const auto w = L.add_scalar("w");
-  EXPECT_EQ(L.num_params(), 6 + 8 + 1 + 1);
-  EXPECT_EQ(L.order(), 10);
-  const MatrixXd L00 = random_matrix(g, 3, 3);
-  const MatrixXd L02 = random_matrix(g, 3, 2), R02 = random_matrix(g, 4, 4);
-  const MatrixXd L12 = random_matrix(g, 2, 4), R12 = random_matrix(g, 2, 4);  // L12 · Yᵀ · R12 at (1,2)
-  const MatrixXd L22 = random_matrix(g, 4, 2), R22 = random_matrix(g, 4, 4);  // symmetrised at (2,2)
-  const MatrixXd K11 = rnd_sym(g, 2), K01 = random_matrix(g, 3, 2), K33 = MatrixXd::Constant(1, 1, -1.0);
-  const MatrixXd C00 = -4 * MatrixXd::Identity(3, 3), C23 = random_matrix(g, 4, 1);
-  L.add_term(0, 0, X, L00, L00.transpose());
-  L.add_term(0, 2, Y, L02, R02);
-  L.add_term(1, 2, Y, L12, R12, /*transpose=*/true);
-  L.add_term(2, 2, Y, L22, R22, false, /*symmetrize=*/true);
-  L.add_scalar_term(1, 1, z, K11);
-  L.add_scalar_term(0, 1, z, K01);
-  L.add_scalar_term(3, 3, w, K33);
-  L.add_constant(0, 0, C00);
-  L.add_constant(2, 3, C23);
-
-  for (int trial = 0; trial < 5; ++trial) {
-    VectorXd x = VectorXd::Zero(L.num_params());
-    const MatrixXd Xv = rnd_sym(g, 3), Yv = random_matrix(g, 2, 4);
-    const double zv = random_matrix(g, 1, 1)(0, 0), wv = random_matrix(g, 1, 1)(0, 0);
-    L.set_value(X, Xv, x);
-    L.set_value(Y, Yv, x);
-    L.set_value(z, MatrixXd::Constant(1, 1, zv), x);
-    L.set_value(w, MatrixXd::Constant(1, 1, wv), x);
-    EXPECT_LT(rel_err(L.value(X, x), Xv), 1e-15);
-    EXPECT_LT(rel_err(L.value(Y, x), Yv), 1e-15);
-    EXPECT_EQ(L.value(z, x)(0, 0), zv);
-
-    MatrixXd M = MatrixXd::Zero(10, 10);
-    auto put = [&](int r0, int c0, const MatrixXd& B) {
-      M.block(r0, c0, B.rows(), B.cols()) += B;
-      if (r0 != c0) M.block(c0, r0, B.cols(), B.rows()) += B.transpose();
-    };
-    // offsets: 0, 3, 5, 9
-    put(0, 0, L00 * Xv * L00.transpose() + C00);
-    put(0, 5, L02 * Yv * R02);
-    put(3, 5, L12 * Yv.transpose() * R12);
-    const MatrixXd T22 = L22 * Yv * R22;
-    put(5, 5, T22 + T22.transpose());
-    put(3, 3, zv * K11);
-    put(0, 3, zv * K01);
-    put(9, 9, wv * K33);
-    put(5, 9, C23);
-    EXPECT_LT(rel_err(L.evaluate(x), M), 1e-13) << "trial " << trial;
-  }
-}
-
-// cost_of(v): cᵀx is the scalar variable's value, for any x; refused for a matrix variable.
-TEST(LmiLayer, CostOfScalarVariable) {
-  std::mt19937 g(12);
-  LmiProblem L({2, 1});
-  const auto X = L.add_symmetric("X", 2);
-  const auto z = L.add_scalar("z");
-  const auto w = L.add_scalar("w");
-  const VectorXd x = rnd_vec(g, L.num_params());
-  EXPECT_DOUBLE_EQ(L.cost_of(z).dot(x), L.value(z, x)(0, 0));
-  EXPECT_DOUBLE_EQ(L.cost_of(w).dot(x), L.value(w, x)(0, 0));
-  EXPECT_EQ(L.cost_of(w).cwiseAbs().sum(), 1.0);
-  EXPECT_THROW(L.cost_of(X), std::invalid_argument);
-}
-
 TEST(LmiLayer, ToyLmiGradientHessianMatchDenseTraces) {
   std::mt19937 g(12);
   LmiProblem L({3, 2, 4, 1});
@@ -192,7 +114,7 @@ TEST(LmiLayer, ToyLmiGradientHessianMatchDenseTraces) {
   L.add_term(1, 2, Y, random_matrix(g, 2, 4), random_matrix(g, 2, 4), true);
   L.add_term(2, 2, Y, random_matrix(g, 4, 2), random_matrix(g, 4, 4), false, true);
   L.add_term(1, 3, X, random_matrix(g, 2, 3), random_matrix(g, 3, 1));
-  L.add_scalar_term(1, 1, z, rnd_sym(g, 2));
+  L.add_scalar_term(1, 1, z, random_symmetric(g, 2));
   L.add_scalar_term(0, 3, z, random_matrix(g, 3, 1));
   L.add_scalar_term(3, 3, z, -MatrixXd::Identity(1, 1));
   L.add_constant(1, 1, -MatrixXd::Identity(2, 2));
@@ -274,14 +196,14 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
     }
     const auto T = hinf::synth::build_theorem1(hinf::synth::scaled_plant(P, sc));
     for (int trial = 0; trial < 4; ++trial) {
-      const VectorXd x = rnd_vec(g, T.lmi.num_params());
+      const VectorXd x = random_vector(g, T.lmi.num_params());
       hinf::certify::Theorem1Point pt;
       pt.R = T.lmi.value(T.R, x);
       pt.S = T.lmi.value(T.S, x);
       pt.AF_bar = T.lmi.value(T.AFbar, x);
       pt.BF_bar = T.lmi.value(T.BFbar, x);
       pt.CF_bar = T.lmi.value(T.CFbar, x);
-      EXPECT_LT(rel_err(pt.R, pt.R.transpose()), 1e-15);
+      EXPECT_LT(relative_error(pt.R, pt.R.transpose()), 1e-15);
       pt.g = T.lmi.value(T.g, x)(0, 0);
       const double lambda_prime = unc ? T.lmi.value(T.lambda, x)(0, 0) : 0.0;
       pt.lambda = lambda_prime / (s * s);
@@ -291,7 +213,7 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
       VectorXd dsc = VectorXd::Ones(N);
       if (unc) dsc.tail(d.j).setConstant(s);
       const MatrixXd expected = dsc.asDiagonal() * Md * dsc.asDiagonal();
-      EXPECT_LT(rel_err(T.lmi.evaluate(x), expected), 1e-12) << "trial " << trial;
+      EXPECT_LT(relative_error(T.lmi.evaluate(x), expected), 1e-12) << "trial " << trial;
     }
   }
 }
@@ -308,9 +230,9 @@ void check_barrier_fd(hinf::sdp::LogDetBarrier& b, const VectorXd& z, std::mt199
   ASSERT_TRUE(b.value(z, f0));
   ASSERT_TRUE(b.gradient(z, g0));
   ASSERT_TRUE(b.hessian(z, H0));
-  EXPECT_LT(rel_err(H0, H0.transpose()), 1e-14);
+  EXPECT_LT(relative_error(H0, H0.transpose()), 1e-14);
   for (int trial = 0; trial < 5; ++trial) {
-    VectorXd v = rnd_vec(g, static_cast<int>(z.size()));
+    VectorXd v = random_vector(g, static_cast<int>(z.size()));
     // unit length in the local (Hessian) norm, so ε is relative to the distance to the boundary
     v /= std::sqrt(v.dot(H0 * v));
     const double eps = 1e-4;
@@ -345,13 +267,13 @@ TEST(LmiLayer, BarrierMatchesFiniteDifferencesPhase2) {
   L.add_term(0, 0, X, random_matrix(g, 3, 3), MatrixXd::Identity(3, 3), false, true);
   L.add_term(0, 2, Y, random_matrix(g, 3, 2), random_matrix(g, 4, 4));
   L.add_term(1, 2, Y, random_matrix(g, 2, 4), random_matrix(g, 2, 4), true);
-  L.add_scalar_term(1, 1, z, rnd_sym(g, 2));
+  L.add_scalar_term(1, 1, z, random_symmetric(g, 2));
   L.add_scalar_term(2, 2, z, -MatrixXd::Identity(4, 4));
   for (int b = 0; b < 3; ++b) L.add_constant(b, b, -MatrixXd::Identity(L.block_size(b), L.block_size(b)));
-  const VectorXd c = rnd_vec(g, L.num_params());
+  const VectorXd c = random_vector(g, L.num_params());
   hinf::sdp::LogDetBarrier b(L, c, 1e-9, 10.0, false);
   b.set_t(1.7);
-  const VectorXd x = 0.05 * rnd_vec(g, L.num_params());
+  const VectorXd x = 0.05 * random_vector(g, L.num_params());
   ASSERT_TRUE(b.inside(x));
   check_barrier_fd(b, x, g, 1e-6);
   // W = slack⁻¹ is symmetrised exactly (an in-place W = (W + Wᵀ)/2 through Eigen aliases
@@ -376,12 +298,12 @@ TEST(LmiLayer, ScaledJacobianGramIsTheHessian) {
   L.hessian(T.transpose() * T, H);
   MatrixXd G(N * (N + 1) / 2, np);
   L.scaled_jacobian(T, G);
-  EXPECT_LT(rel_err(G.transpose() * G, H), 1e-12);
+  EXPECT_LT(relative_error(G.transpose() * G, H), 1e-12);
   for (int f : {1, N / 2, N - 1}) {
     MatrixXd Gf(LmiProblem::scaled_jacobian_rows(N, f), np), Hm;
     L.scaled_jacobian(T, Gf, f);
     L.hessian(T.topRows(f).transpose() * T.topRows(f), Hm);
-    EXPECT_LT(rel_err(Gf.transpose() * Gf + Hm, H), 1e-12) << "f = " << f;
+    EXPECT_LT(relative_error(Gf.transpose() * Gf + Hm, H), 1e-12) << "f = " << f;
   }
 }
 
@@ -418,7 +340,7 @@ TEST(LmiLayer, QrNewtonStepMatchesExplicitWhereWellConditioned) {
 VectorXd phase1_point(const hinf::synth::Theorem1Lmi& T, std::mt19937& g, double room) {
   const int np = T.lmi.num_params();
   VectorXd z(np + 1);
-  z.head(np) = 0.3 * rnd_vec(g, np);
+  z.head(np) = 0.3 * random_vector(g, np);
   const double lmax = T.lmi.evaluate(z.head(np)).selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
   z(np) = std::max(0.0, lmax) + room;
   return z;

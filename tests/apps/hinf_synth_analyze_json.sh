@@ -2,7 +2,7 @@
 # `analyze --json` escapes the gains path: run on a copy of GAINS whose name holds a double
 # quote and a backslash, the output must be one line of valid JSON (no NaN/Infinity) whose
 # "gains" is that path, with the keys in the documented order.
-#   cli_analyze_json.sh EXE PYTHON3 CONFIG GAINS
+#   hinf_synth_analyze_json.sh EXE PYTHON3 CONFIG GAINS
 set -u
 exe=$1 python=$2 config=$3 gains=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-cli-json-XXXXXX")

@@ -4,13 +4,13 @@
 
 #include <cmath>
 
-#include "hinf/sim/vectors.hpp"
+#include "hinf/models/two_body.hpp"
 
 namespace {
 
-using hinf::sim::RelativeTwoBody;
-using hinf::sim::Vector3;
-using hinf::sim::Vector6;
+using hinf::models::RelativeTwoBody;
+using Vector3 = RelativeTwoBody::Vector3;
+using Vector6 = RelativeTwoBody::Vector6;
 
 constexpr double kMu = 3.986004418e14;
 constexpr double kOmega = 7.2722e-5;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `export-sdpa` solved by CSDP must agree with `solve`: γ² within RTOL (relative).
-#   cli_sdpa_vs_solve.sh EXE CSDP CONFIG RTOL
+#   hinf_synth_sdpa_vs_solve.sh EXE CSDP CONFIG RTOL
 set -u
 exe=$1 csdp=$2 cfg=$3 rtol=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-sdpa-XXXXXX")

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One end-to-end case of the hinf-synth executable.
-#   cli_case.sh EXE EXPECTED_RC STDERR_REGEX [ARG...]
+#   hinf_synth_case.sh EXE EXPECTED_RC STDERR_REGEX [ARG...]
 # In ARGs, @OUTDIR@ is a fresh empty directory, @OUT@ = @OUTDIR@/gains.yaml and
 # @WORK@ its parent. Passes iff: the exit code is EXPECTED_RC (and < 128: no crash),
 # stderr matches the extended regex, and — for a failing run — @OUTDIR@ is still empty

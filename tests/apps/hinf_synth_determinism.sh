@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Two `solve` runs of the same config must give byte-identical gains files apart from
 # the `timing:` section (docs/maths.md [D13]), and leave nothing but the two files behind.
-#   cli_determinism.sh EXE CONFIG
+#   hinf_synth_determinism.sh EXE CONFIG
 set -u
 exe=$1 cfg=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-det-XXXXXX")

@@ -1,0 +1,77 @@
+// The one atomic writer (common/): a set of files appears together or not at all, its
+// temporaries have unpredictable names, and SIGTERM/SIGINT leave no temporary behind.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "scratch_dir.hpp"
+#include "hinf/common/atomic_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using ScratchDir = hinf::test::ScratchDir;
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(AtomicFileSet, FilesAppearTogetherAndReplaceThePreviousOnes) {
+  ScratchDir dir("atomic_file");
+  std::ofstream(dir / "a.txt") << "old a";
+  hinf::AtomicFileSet set;
+  const std::string temporary = set.add(dir / "a.txt", "new a");
+  set.add(dir / "b.txt", "new b");
+  EXPECT_EQ(text_of(dir / "a.txt"), "old a");  // nothing visible before commit
+  EXPECT_FALSE(fs::exists(dir / "b.txt"));
+  set.commit();
+  EXPECT_EQ(text_of(dir / "a.txt"), "new a");
+  EXPECT_EQ(text_of(dir / "b.txt"), "new b");
+  EXPECT_EQ(dir.entries(), 2) << "a temporary or a kept previous file was left";
+  // the name carries a random part: not guessable from the pid alone
+  EXPECT_GT(fs::path(temporary).filename().string().size(), std::string(".a.txt.tmp.") .size() + 16);
+}
+
+TEST(AtomicFileSet, AnUncommittedSetLeavesNothing) {
+  ScratchDir dir("atomic_file");
+  {
+    hinf::AtomicFileSet set;
+    set.add(dir / "a.txt", "a");
+  }
+  EXPECT_EQ(dir.entries(), 0);
+}
+
+// A process killed by SIGTERM or SIGINT between writing its temporaries and committing
+// them leaves no temporary (remove_temporaries_on_signals), and still dies of the signal.
+TEST(AtomicFileSet, SignalsRemoveTheTemporaries) {
+  for (const int sig : {SIGTERM, SIGINT}) {
+    ScratchDir dir("atomic_file");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      hinf::remove_temporaries_on_signals();
+      hinf::AtomicFileSet set;
+      set.add(dir / "a.txt", "a");
+      set.add(dir / "b.txt", std::string(1 << 20, 'b'));
+      std::raise(sig);
+      ::_exit(0);  // not reached
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "status " << status;
+    EXPECT_EQ(dir.entries(), 0) << "signal " << sig << " left a temporary";
+  }
+}
+
+}  // namespace
