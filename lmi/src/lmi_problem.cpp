@@ -194,7 +194,8 @@ void LmiProblem::trace_products(const Eigen::MatrixXd& Y, Eigen::VectorXd& g) co
   for (int r = 0; r < raw_size_; ++r) g(raw_to_param_[r]) += graw(r);
 }
 
-void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
+bool LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs,
+                         const std::function<bool()>& interrupted) const {
   // For terms h = (L, X, R) at (r, c) and k = (L', Y, R') at (r', c'), with W symmetric:
   //   tr(W dM_h W dM_k) = 2 w w' [ tr(X Q₁ Y P₁) + tr(X Q₂ Yᵀ P₂) ]
   //   Q₁ = R W[c, r'] L',  P₁ = R' W[c', r] L,  Q₂ = R W[c, c'] R'ᵀ,  P₂ = L'ᵀ W[r', r] L.
@@ -204,6 +205,7 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
   Eigen::MatrixXd Q1, P1, Q2, P2, tmp;
   const int nt = static_cast<int>(terms_.size());
   for (int ih = 0; ih < nt; ++ih) {
+    if (interrupted && interrupted()) return false;
     const Term& h = terms_[ih];
     const Variable& vh = variables_[h.var];
     const bool hs = vh.shape == VarShape::Scalar;
@@ -271,6 +273,7 @@ void LmiProblem::hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const {
   }
   Hsym_ = Hraw_ + Hraw_.transpose();
   contract_raw(Hsym_, Hs);
+  return true;
 }
 
 void LmiProblem::scaled_jacobian(const Eigen::MatrixXd& T, Eigen::MatrixXd& G, int first_row) const {

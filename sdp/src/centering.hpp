@@ -22,7 +22,7 @@ struct CenteringOptions {
   double lambda2_tol = 2e-3;      // centred when λ² ≤ this (λ ≈ 0.045)
   double lambda2_accept = 0.0625; // ... or when λ² has stalled at or below this (λ ≤ 0.25)
   int max_iterations = 60;
-  double max_cpu_time = 600;
+  double max_seconds = 600;      // wall-clock budget of this centring (checked every iteration)
   int stall_iterations = 4;       // λ² not halved for this many iterations: stalled
   int give_up_iterations = 8;     // ... for this many near the centre: the centring failed
   bool phase1_stop_negative = false;  // phase I: stop as soon as s < 0 at an iterate

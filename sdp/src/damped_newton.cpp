@@ -55,7 +55,7 @@ CenteringResult damped_newton_centre(LogDetBarrier& barrier, const Eigen::Vector
       return r;
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (k >= opt.max_iterations || elapsed > opt.max_cpu_time) {
+    if (k >= opt.max_iterations || elapsed > opt.max_seconds) {
       r.status = k >= opt.max_iterations ? "iteration limit" : "time limit";
       return r;
     }

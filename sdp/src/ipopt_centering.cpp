@@ -6,6 +6,7 @@
 #include <IpTNLP.hpp>
 #include <IpoptConfig.h>
 
+#include <chrono>
 #include <limits>
 
 namespace hinf::sdp {
@@ -30,7 +31,9 @@ constexpr int kIndefiniteLimit = 2;
 // Ipopt's own convergence tests are set below anything reachable: the Newton-decrement
 // test of the intermediate callback ends every centring.
 constexpr Number kIpoptTolerance = 1e-14;
-// Ipopt refuses max_cpu_time <= 0; a centring without time left gets this (s).
+// Ipopt refuses max_cpu_time <= 0; a centring without time left gets this (s). Ipopt
+// 3.11 counts CPU time only (no max_wall_time), which falls behind the wall clock on a
+// busy machine: the intermediate callback also ends the centring on the wall clock.
 constexpr Number kMinimumCpuTime = 1e-3;
 // Ipopt's derivative checker (tests only): forward-difference step and relative tolerance.
 constexpr Number kDerivativeTestPerturbation = 1e-7;
@@ -102,6 +105,10 @@ class CenteringTnlp : public Ipopt::TNLP {
                              Number, Number, Number, Number alpha_pr, Index, const Ipopt::IpoptData*,
                              Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = iter;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > opt_.max_seconds) {
+      time_limited_ = true;
+      return false;
+    }
     if (last_grad_z_.size() != n_) return true;
     if (opt_.phase1_stop_negative && last_grad_z_(n_ - 1) < 0) {
       stopped_early_ = true;
@@ -180,6 +187,8 @@ class CenteringTnlp : public Ipopt::TNLP {
   double prev_lambda2_ = std::numeric_limits<double>::infinity();
   int best_iter_ = 0;
   int indefinite_ = 0;  // iterations where λ² could not be computed
+  bool time_limited_ = false;  // stopped by the wall clock (max_seconds)
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace
@@ -217,7 +226,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
                                     const CenteringOptions& opt) {
   auto& o = *impl_->app->Options();
   o.SetIntegerValue("max_iter", opt.max_iterations);
-  o.SetNumericValue("max_cpu_time", opt.max_cpu_time > 0 ? opt.max_cpu_time : kMinimumCpuTime);
+  o.SetNumericValue("max_cpu_time", opt.max_seconds > 0 ? opt.max_seconds : kMinimumCpuTime);
   if (opt.derivative_test) {
     o.SetStringValue("derivative_test", "second-order");
     o.SetNumericValue("derivative_test_perturbation", kDerivativeTestPerturbation);
@@ -246,7 +255,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
   r.stopped_early = tnlp->stopped_early_;
   switch (st) {
     case Ipopt::Solve_Succeeded: r.status = "solve_succeeded"; break;
-    case Ipopt::User_Requested_Stop: r.status = "user_requested_stop"; break;
+    case Ipopt::User_Requested_Stop: r.status = tnlp->time_limited_ ? "wall_time_limit" : "user_requested_stop"; break;
     case Ipopt::Maximum_Iterations_Exceeded: r.status = "maximum_iterations"; break;
     case Ipopt::Maximum_CpuTime_Exceeded: r.status = "maximum_cpu_time"; break;
     case Ipopt::Search_Direction_Becomes_Too_Small: r.status = "search_direction_too_small"; break;

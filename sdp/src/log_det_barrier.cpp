@@ -77,7 +77,7 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   // ∂(−log det slack)/∂xᵢ = tr(slack⁻¹ Mᵢ) = tr(W Mᵢ).
   Eigen::VectorXd gx;
   lmi_.trace_products(W_, gx);
-  lmi_.hessian(W_, Hs_);
+  if (!lmi_.hessian(W_, Hs_, [this] { return past_deadline(); })) return false;
   grad_phi_.resize(d);
   hess_.resize(d, d);
   grad_phi_.head(n_) = gx;
@@ -98,6 +98,7 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   const double r2 = radius_ * radius_ - x.squaredNorm();
   grad_phi_.head(n_) += 2.0 / r2 * x;
   add_ball_hessian(x, hess_.topLeftCorner(n_, n_));
+  if (past_deadline()) return false;  // before anyone factorises it (seconds at large p)
   z_derivs_ = z;
   have_derivs_ = true;
   hess_factored_ = false;
@@ -135,6 +136,7 @@ bool LogDetBarrier::newton_decrement2(const Eigen::VectorXd& z, double& lambda2)
 }
 
 bool LogDetBarrier::factor_hessian() {
+  if (past_deadline()) return false;
   // hess_ changes only when derivatives() recomputes it (it has no t in it): the Newton
   // decrement and the path tangent at the same point share one factorisation.
   if (!hess_factored_) {
@@ -181,7 +183,7 @@ bool LogDetBarrier::factor_jacobian(const Eigen::VectorXd& z) {
   lmi_.scaled_jacobian(Tsc_, G_, f);
   // H_mod, plus the ball's Hessian
   Wm_.noalias() = Tsc_.topRows(f).transpose() * Tsc_.topRows(f);
-  lmi_.hessian(Wm_, Hmod_);
+  if (!lmi_.hessian(Wm_, Hmod_, [this] { return past_deadline(); })) return false;
   add_ball_hessian(z.head(n_), Hmod_);
   mod_ldlt_.compute(Hmod_);
   if (mod_ldlt_.info() != Eigen::Success) return false;
@@ -190,7 +192,7 @@ bool LogDetBarrier::factor_jacobian(const Eigen::VectorXd& z) {
   Ft = Ft * mod_ldlt_.vectorD().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   Ft = mod_ldlt_.transpositionsP().transpose() * Ft;
   G_.bottomRows(n_) = Ft.transpose();
-  if (!G_.allFinite()) return false;
+  if (!G_.allFinite() || past_deadline()) return false;
   // in place: only R (the top n rows' upper triangle) is needed, and no copy of G
   Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(G_);
   z_qr_ = z;

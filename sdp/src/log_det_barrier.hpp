@@ -5,6 +5,7 @@
 // (as LMI Lab's feasradius; §4.3) that keeps the barrier bounded below. Knows nothing of Ipopt.
 #pragma once
 #include <Eigen/Dense>
+#include <chrono>
 
 #include "hinf/lmi/lmi_problem.hpp"
 
@@ -21,6 +22,11 @@ class LogDetBarrier {
   bool phase1() const { return phase1_; }
   void set_t(double t) { t_ = t; }
   double t() const { return t_; }
+  // After this instant every Hessian assembly stops early and the functions that need
+  // one return false (a large LMI's Hessian takes seconds: the solver's time limit is
+  // kept within one term's work, not one Newton iteration's).
+  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
+  bool past_deadline() const { return std::chrono::steady_clock::now() > deadline_; }
 
   // Each returns false when z is outside the barrier's domain (the Cholesky factor
   // of the slack fails or ‖x‖ ≥ ρ); Ipopt then shortens its step.
@@ -67,6 +73,7 @@ class LogDetBarrier {
   int n_;
   int N_;
   double t_ = 1.0;
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
 
   // cache keyed by z
   Eigen::VectorXd z_factored_, z_derivs_;

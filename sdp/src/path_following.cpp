@@ -57,6 +57,8 @@ constexpr double kObjectiveFloor = 1e-12;
 constexpr double kInitialObjectiveFloor = 1e-8;
 
 using Clock = std::chrono::steady_clock;
+// Time limits are kept below this (s, ~30 years) so that start + limit cannot overflow.
+constexpr double kMaxTimeLimit = 1e9;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -115,6 +117,12 @@ class PathFollower {
   double next_t(Phase phase, double gap, double gap_goal) const;
   bool out_of_budget();
   double remaining() const { return opt_.time_limit_s - seconds_since(start_); }
+  // The instant the time limit ends, for the barriers' Hessian assemblies (kMaxTimeLimit:
+  // a limit beyond it, e.g. 1e300 s, is no limit and must not overflow the clock).
+  Clock::time_point deadline() const {
+    return start_ + std::chrono::duration_cast<Clock::duration>(
+                        std::chrono::duration<double>(std::min(opt_.time_limit_s, kMaxTimeLimit)));
+  }
 
   const lmi::LmiProblem& lmi_;
   const VectorXd& c_;
@@ -182,7 +190,7 @@ CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase p
   if (s_.last_stalled && phase == Phase::Minimise &&
       last_relative_gap(b) <= kShortBudgetWithin * opt_.relative_gap_tol)
     co.max_iterations = std::min(co.max_iterations, co.give_up_iterations);
-  co.max_cpu_time = remaining();
+  co.max_seconds = remaining();
   co.phase1_stop_negative = (phase == Phase::FindFeasible);
   co.stop_on_inexact_newton = (phase == Phase::Minimise);
   return co;
@@ -354,6 +362,7 @@ bool PathFollower::find_feasible(VectorXd& x) {
     phase1_weight_ = eta;
     sol_.phase1_path.clear();
     LogDetBarrier b1(lmi_, c_, opt_.lmi_margin, r1, true, eta);
+    b1.set_deadline(deadline());
     z.head(n_) = x;
     z(n_) = lmax + 1.0;
     ok = follow(b1, z, Phase::FindFeasible);
@@ -375,6 +384,7 @@ Solution PathFollower::solve(const VectorXd& x0) {
     return sol_;
   }
   LogDetBarrier b2(lmi_, c_, opt_.lmi_margin, opt_.feasibility_radius, false);
+  b2.set_deadline(deadline());
   const bool ok = follow(b2, x, Phase::Minimise);
   sol_.x = x;
   sol_.objective = c_.dot(x);

@@ -53,6 +53,10 @@ void Settings::validate() const {
   if (max_iterations < 1 || max_iterations > 1000000)
     fail("max_iterations", std::to_string(max_iterations), "must be in [1, 1000000]");
 
+  require_finite("max_memory_mb", max_memory_mb);
+  if (max_memory_mb < 64 || max_memory_mb > 1048576)
+    fail("max_memory_mb", number_text(max_memory_mb), "must be in [64, 1048576] (MiB)");
+
   require_finite("time_limit_s", time_limit_s);
   if (!(time_limit_s > 0)) fail("time_limit_s", number_text(time_limit_s), "must be > 0");
 

@@ -15,6 +15,7 @@
 #include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/sdp/dual_bound.hpp"
+#include "hinf/sdp/memory_model.hpp"
 #include "theorem1.hpp"
 
 namespace hinf::synth {
@@ -88,6 +89,20 @@ sdp::Options solver_options(const Settings& settings) {
   return o;
 }
 
+// Refuses, before anything of its size is allocated, an SDP whose solve would need more
+// memory than solver.max_memory_mb (the solver's model, hinf/sdp/memory_model.hpp).
+void require_memory(const lmi::LmiProblem& lmi, const Settings& settings, const char* what) {
+  const double mib = sdp::estimated_peak_bytes(lmi.order(), lmi.num_params() + 2) / (1 << 20);
+  if (mib <= settings.max_memory_mb) return;
+  throw Error(ErrorCode::InvalidInput,
+              std::string(what) + " has order " + std::to_string(lmi.order()) + " and " +
+                  std::to_string(lmi.num_params()) + " variables; its solve needs about " + fmt(std::ceil(mib)) +
+                  " MiB (the solver's memory model, docs/benchmarks.md \"Memory\"), above the limit max_memory_mb = " +
+                  hinf::number_text(settings.max_memory_mb) +
+                  " MiB of the solver settings; raise it on a machine with that memory, or reduce the plant's order",
+              "max_memory_mb");
+}
+
 ErrorCode error_code_for(sdp::Status status) {
   return status == sdp::Status::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
 }
@@ -98,6 +113,7 @@ ErrorCode error_code_for(sdp::Status status) {
 double solve_analysis(const Plant& user_plant, const Filter& user, const Settings& settings) {
   const PlantScaling sc = choose_scaling(user_plant);
   const AnalysisLmi A = build_analysis_lmi(scaled_plant(user_plant, sc), scaled_filter(user, sc));
+  require_memory(A.lmi, settings, "the robust analysis LMI");
   const VectorXd c = A.lmi.cost_of(A.g);
   const sdp::Solution sol = sdp::minimize_linear(A.lmi, c, solver_options(settings));
   if (sol.status != sdp::Status::Solved)
@@ -211,6 +227,7 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
 // solver's reason if it does not end Solved.
 sdp::Solution solve_corollary1(const Theorem1Lmi& T, const std::vector<lmi::SparseEntry>& basis_error,
                                const Settings& settings, const IterationObserver& observer) {
+  require_memory(T.lmi, settings, "the Theorem 1 LMI");
   const VectorXd c = T.lmi.cost_of(T.g);
   sdp::Solution sol = sdp::minimize_linear(T.lmi, c, solver_options(settings), VectorXd(),
                                            staged(observer, SolveStage::Synthesis));

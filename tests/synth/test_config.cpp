@@ -122,6 +122,7 @@ TEST(Config, EveryScalarFormAndEverySolverFieldIsRead) {
                            "  max_newton_per_centering: 40\n"
                            "  max_iterations: 300\n"
                            "  time_limit_s: 12.5\n"
+                           "  max_memory_mb: 2048\n"
                            "  gamma_backoff: 0.01\n"
                            "  stability_samples: 0\n"
                            "  seed: 4000000000\n"
@@ -135,6 +136,7 @@ TEST(Config, EveryScalarFormAndEverySolverFieldIsRead) {
   EXPECT_EQ(s.max_newton_per_centering, 40);
   EXPECT_EQ(s.max_iterations, 300);
   EXPECT_EQ(s.time_limit_s, 12.5);
+  EXPECT_EQ(s.max_memory_mb, 2048.0);
   EXPECT_EQ(s.gamma_backoff, 0.01);
   EXPECT_EQ(s.stability_samples, 0);
   EXPECT_EQ(s.seed, 4000000000u);
@@ -346,6 +348,7 @@ TEST(BadConfig, SolverSettingsOutOfRange) {
   expect_invalid(base + "  max_iterations: 1.5\n", {"solver.max_iterations = '1.5': must be an integer"});
   expect_invalid(base + "  max_iterations: 0\n", {"solver.max_iterations = 0"});
   expect_invalid(base + "  time_limit_s: .nan\n", {"solver.time_limit_s = nan: must be finite"});
+  expect_invalid(base + "  max_memory_mb: 10\n", {"solver.max_memory_mb = 10: must be in [64, 1048576] (MiB)"});
   expect_invalid(base + "  gamma_backoff: -0.1\n", {"solver.gamma_backoff = -0.1"});
   expect_invalid(base + "  seed: -1\n", {"solver.seed = '-1': must be a non-negative integer"});
   expect_invalid(base + "  verbose: maybe\n", {"solver.verbose = 'maybe': must be true or false"});

@@ -6,7 +6,7 @@ namespace hinf::synth {
 Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver) {
   reader.check_map(solver, "solver",
                    {"lmi_margin", "relative_gap_tol", "barrier_growth", "feasibility_radius",
-                    "max_newton_per_centering", "max_iterations", "time_limit_s",
+                    "max_newton_per_centering", "max_iterations", "time_limit_s", "max_memory_mb",
                     "gamma_backoff", "stability_samples", "seed", "verbose"});
   Settings s;
   const auto number = [&](const char* key, double& field) {
@@ -22,6 +22,7 @@ Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver)
   integer("max_newton_per_centering", s.max_newton_per_centering);
   integer("max_iterations", s.max_iterations);
   number("time_limit_s", s.time_limit_s);
+  number("max_memory_mb", s.max_memory_mb);
   number("gamma_backoff", s.gamma_backoff);
   integer("stability_samples", s.stability_samples);
   if (const YAML::Node n = solver["seed"]) s.seed = reader.unsigned_integer(n, "solver.seed");

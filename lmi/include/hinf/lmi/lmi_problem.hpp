@@ -10,6 +10,7 @@
 // independent of the order N of M except through the blocks a term touches.
 #pragma once
 #include <Eigen/Dense>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,8 +76,11 @@ class LmiProblem {
   const Eigen::MatrixXd& constant() const { return M0_; }
   // g_i = tr(Y Mᵢ) for a symmetric Y (the barrier gradient when Y = W).
   void trace_products(const Eigen::MatrixXd& Y, Eigen::VectorXd& g) const;
-  // Hs_ij = tr(W Mᵢ W Mⱼ) (full symmetric matrix; the barrier Hessian).
-  void hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs) const;
+  // Hs_ij = tr(W Mᵢ W Mⱼ) (full symmetric matrix; the barrier Hessian). `interrupted`, if
+  // given, is asked once per term (a Hessian of a large LMI takes seconds); when it says
+  // true the assembly stops and false is returned, Hs left unspecified.
+  bool hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs,
+               const std::function<bool()>& interrupted = nullptr) const;
   // The scaled Jacobian of the barrier for any T with TᵀT = W (the inverse Cholesky factor
   // of the slack, or Λ^{-1/2}Qᵀ from its eigendecomposition): column i = svec(T Mᵢ Tᵀ),
   // svec the lower triangle column by column with off-diagonal entries ×√2, so that GᵀG

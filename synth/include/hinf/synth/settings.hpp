@@ -21,6 +21,10 @@ struct Settings {
   int max_iterations = 600;
   // Wall-clock limit for one solve, seconds.
   double time_limit_s = 600.0;
+  // Refuse (exit 2, before allocating) an SDP whose solve the solver's memory model
+  // (hinf/sdp/memory_model.hpp) puts above this many MiB. The default leaves a third of
+  // a 24 GiB machine free; raise it on a larger one.
+  double max_memory_mb = 16384;
   // γ back-off (docs/maths.md §6, [D6]): if > 0, the filter is recovered at
   // γ_b = (1 + gamma_backoff)·γ* from the point of largest LMI margin (better-conditioned
   // S, R − S and gains). 0 = off.
