@@ -9,6 +9,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <thread>
 
@@ -207,6 +208,12 @@ int main(int argc, char** argv) {
   hinf::remove_temporaries_on_signals();  // Ctrl-C or a kill leaves no temporary
   try {
     return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    // Scenario sizes are capped (kMaxSimulationSteps), so this is a machine (or ulimit -v)
+    // smaller than a run of that size.
+    std::cerr << "hinf-sim: error: out of memory: this machine (or its ulimit -v) cannot hold the run's "
+                 "trajectories; shorten the duration or lower --runs\n";
+    return kExitInvalid;
   } catch (const std::exception& e) {
     std::cerr << "hinf-sim: internal error: " << e.what() << "\n";
     return kExitNumerical;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <csignal>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,13 @@ int main(int argc, char** argv) {
   } catch (const Error& e) {
     std::cerr << "hinf-synth: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());
+  } catch (const std::bad_alloc&) {
+    // Inputs are capped before allocation and the solver's memory model is checked
+    // against solver.max_memory_mb, so this is a machine (or ulimit -v) smaller than that.
+    std::cerr << "hinf-synth: error: out of memory: this machine (or its ulimit -v) cannot provide the memory "
+                 "the problem needs; lower solver.max_memory_mb to what it has, and the solve is refused "
+                 "up front with its estimate\n";
+    return hinf::exit_code(ErrorCode::InvalidInput);
   } catch (const std::exception& e) {
     std::cerr << "hinf-synth: internal error: " << e.what() << "\n";
     return hinf::exit_code(ErrorCode::NumericalFailure);

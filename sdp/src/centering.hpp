@@ -15,6 +15,7 @@ struct CenteringResult {
   bool stopped_early = false;  // early-exit predicate met (phase I found s < 0)
   bool stalled = false;        // centred by the stall rule (λ² stopped falling: round-off)
   bool inexact = false;        // stopped: the steps broke Newton's quadratic convergence bound
+  bool out_of_memory = false;  // the engine could not allocate (Ipopt's Insufficient_Memory)
   std::string status;  // how the centring ended (Ipopt's return status, or the damped Newton's)
 };
 

@@ -262,6 +262,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
     case Ipopt::Restoration_Failed: r.status = "restoration_failed"; break;
     case Ipopt::Error_In_Step_Computation: r.status = "error_in_step_computation"; break;
     case Ipopt::Invalid_Number_Detected: r.status = "invalid_number"; break;
+    case Ipopt::Insufficient_Memory: r.status = "insufficient_memory"; r.out_of_memory = true; break;
     default: r.status = "ipopt_status_" + std::to_string(static_cast<int>(st)); break;
   }
   // A successful Ipopt exit (its own tolerance met) also means centred.

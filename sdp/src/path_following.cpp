@@ -301,6 +301,11 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
           return true;
         case Recovery::Fail:
           if (out_of_budget()) return false;
+          if (r.out_of_memory) {
+            sol_.status = Status::OutOfMemory;
+            sol_.detail = "in phase " + std::to_string(static_cast<int>(phase)) + " at t = " + std::to_string(s_.t);
+            return false;
+          }
           sol_.status = Status::NumericalError;
           sol_.detail = "centring failed in phase " + std::to_string(static_cast<int>(phase)) + " at t = " +
                         std::to_string(s_.t) + " (" +

@@ -103,8 +103,12 @@ void require_memory(const lmi::LmiProblem& lmi, const Settings& settings, const 
               "max_memory_mb");
 }
 
+// Out of memory is a problem too large for the machine (or its ulimit -v), as the memory
+// guard's refusal is: invalid input, not a numerical failure.
 ErrorCode error_code_for(sdp::Status status) {
-  return status == sdp::Status::Infeasible ? ErrorCode::Infeasible : ErrorCode::NumericalFailure;
+  if (status == sdp::Status::Infeasible) return ErrorCode::Infeasible;
+  if (status == sdp::Status::OutOfMemory) return ErrorCode::InvalidInput;
+  return ErrorCode::NumericalFailure;
 }
 
 // The robust analysis LMI docs/maths.md (50) (Lemma 1 with the S-procedure) for a fixed filter,

@@ -2,6 +2,9 @@
 # The solver's resource limits, end to end (issue 13):
 #  1. a plant whose solve the memory model puts above solver.max_memory_mb is refused
 #     (exit 2) at once, naming the estimate, before anything of that size is allocated;
+#  3. (not under the sanitizers, which cannot run under ulimit -v) a machine smaller than
+#     the problem, ulimit -v 250 MB for a 400 MB solve: exit 2 "out of memory", never an
+#     "internal error" or a crash;
 #  2. solver.time_limit_s is kept on the wall clock within one Hessian term's work and one
 #     dense factorisation (a Newton iteration of the n = 24 plant takes ~2 s, and the time
 #     limit was checked only between centrings: 5 s stopped after 10 s).
@@ -26,17 +29,27 @@ start=$(date +%s.%N)
 "$exe" solve "$work/short.yaml" -o "$work/g.yaml" 2> "$work/err"
 rc=$?
 end=$(date +%s.%N)
-# 10 % of the limit, plus 2 s for the start-up, the pre-flight and one factorisation
-allowed=$(awk -v l=$limit 'BEGIN { print 1.1 * l + 2.0 }')
+# 10 % of the limit, plus 3 s for the start-up, the pre-flight, one factorisation and a busy
+# machine (the test guards against gross overshoot, e.g. a limit checked only between
+# centrings: the first centring of this plant takes ~7 s; docs/benchmarks.md has the figures)
+allowed=$(awk -v l=$limit 'BEGIN { print 1.1 * l + 3.0 }')
 took=$(awk -v a=$start -v b=$end 'BEGIN { print b - a }')
 echo "time_limit_s $limit: exit $rc after $took s (allowed $allowed s)"
 if [ $rc -ne 4 ] || ! grep -q "time limit" "$work/err"; then
   echo "FAIL: time limit: exit $rc, expected 4 naming the time limit:"; cat "$work/err"; status=1
 fi
-# HINF_NO_TIME_BOUND (the sanitizer build): the exit and the message only
-if [ -z "${HINF_NO_TIME_BOUND:-}" ]; then
+# HINF_SANITIZED (the sanitizer build): the exit and the message only
+if [ -z "${HINF_SANITIZED:-}" ]; then
   awk -v t=$took -v a=$allowed 'BEGIN { exit !(t <= a) }' || { echo "FAIL: took $took s > $allowed s"; status=1; }
 fi
 [ -e "$work/g.yaml" ] && { echo "FAIL: time limit wrote an output"; status=1; }
+if [ -z "${HINF_SANITIZED:-}" ]; then
+  (ulimit -v 250000; "$exe" solve "$cfg" -o "$work/g.yaml") 2> "$work/err"
+  rc=$?
+  if [ $rc -ne 2 ] || ! grep -q "out of memory" "$work/err"; then
+    echo "FAIL: ulimit -v: exit $rc, expected 2 'out of memory':"; cat "$work/err"; status=1
+  fi
+  [ -e "$work/g.yaml" ] && { echo "FAIL: ulimit -v run wrote an output"; status=1; }
+fi
 [ $status -eq 0 ] && echo PASS
 exit $status

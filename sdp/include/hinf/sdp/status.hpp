@@ -11,6 +11,7 @@ enum class Status {
   MaxIterations,   // Newton-iteration limit hit
   TimeLimit,       // wall-clock limit hit
   NumericalError,  // the barrier could not be centred (round-off, engine failure)
+  OutOfMemory,     // the Newton engine (Ipopt/MUMPS) could not get the memory it needs
   NotRun
 };
 

@@ -1,0 +1,18 @@
+// libFuzzer harness: the scenario reader (sim/) on arbitrary bytes; see fuzz_config.cpp for
+// what counts as a finding. Paths named in a scenario resolve against the working
+// directory and are only tested for existence.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "hinf/common/error.hpp"
+#include "hinf/sim/scenario_yaml.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    hinf::sim::parse_scenario(text, "fuzz.yaml");
+  } catch (const hinf::Error&) {
+  }
+  return 0;
+}
