@@ -1,5 +1,7 @@
 #include "hinf/common/yaml_reader.hpp"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -95,11 +97,20 @@ void YamlReader::fail(const YAML::Node& at, const std::string& message) const {
   throw Error(ErrorCode::InvalidInput, location(at) + ": " + message);
 }
 
+std::string YamlReader::location_of(const YAML::Mark& mark) const {
+  if (mark.is_null()) return source_;
+  return source_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
 YAML::Node YamlReader::load(const std::string& text, const std::string& empty_message) const {
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
-  } catch (const YAML::ParserException& e) {  // includes DeepRecursion
+  } catch (const YAML::DeepRecursion& e) {  // yaml-cpp's own guard of its recursive parser
+    throw Error(ErrorCode::InvalidInput,
+                location_of(e.mark) + ": lists or maps nested " + std::to_string(e.depth()) +
+                    " levels deep; no format of this project nests more than 4 (a config's hill.B.diag)");
+  } catch (const YAML::ParserException& e) {
     const std::string at = e.mark.is_null() ? source_
                                             : source_ + ":" + std::to_string(e.mark.line + 1) +
                                                   ":" + std::to_string(e.mark.column + 1);

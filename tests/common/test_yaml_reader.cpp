@@ -142,6 +142,17 @@ TEST(OneStrictReader, OversizedMatricesAreRefusedBeforeAllocation) {
                  "filter.A_F: 1001 rows; a vector or matrix read from a file has at most 1000");
 }
 
+// yaml-cpp's parser recurses: nesting is refused at its depth guard, by name.
+TEST(OneStrictReader, DeepNestingIsRefusedByName) {
+  const std::string deep = std::string(5000, '[') + std::string(5000, ']');
+  // the guard fires at depth 500; yaml-cpp marks the end of the flow
+  expect_refused(kConfig, replaced(kConfig.valid, "[[0.5, 0.1], [0, 0.4]]", deep), 2, 10006,
+                 "lists or maps nested 500 levels deep");
+  expect_refused(kGains, replaced(kGains.valid, "[[0.5]]", deep), 5, 10008, "lists or maps nested 500 levels deep");
+  expect_refused(kScenario, replaced(kScenario.valid, "[600, 550, 1040, 0, 0, 0]", deep), 2, 10036,
+                 "lists or maps nested 500 levels deep");
+}
+
 // ---- the reader's own vocabulary (what the three formats share) --------------------
 
 hinf::YamlMap map_of(const hinf::YamlReader& reader, const YAML::Node& node,

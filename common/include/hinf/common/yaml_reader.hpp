@@ -95,6 +95,8 @@ class YamlReader {
  private:
   std::string scalar_text(const YAML::Node& node, const std::string& path,
                           const char* expected) const;
+  // "<source>:<line>:<col>" of a parser mark, or "<source>".
+  std::string location_of(const YAML::Mark& mark) const;
   // fail() unless count ≤ kMaxMatrixDimension: "<path>: 30000 rows; ... at most 1000".
   void require_dimension(const YAML::Node& node, const std::string& path, const char* what,
                          size_t count) const;
