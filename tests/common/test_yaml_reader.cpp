@@ -142,6 +142,18 @@ TEST(OneStrictReader, OversizedMatricesAreRefusedBeforeAllocation) {
                  "filter.A_F: 1001 rows; a vector or matrix read from a file has at most 1000");
 }
 
+// yaml-cpp 0.7's LoadAll never ends on a stray ',' outside [ ] or { } (it yields empty
+// documents without consuming it, allocating until memory runs out; found by
+// fuzz/fuzz_gains): refused at once, at the ','.
+TEST(OneStrictReader, StrayFlowIndicatorIsRefusedNotLoopedOn) {
+  const std::string stall = "YAML syntax error: the parser cannot read past this point";
+  expect_refused(kConfig, ",\n", 1, 1, stall);
+  expect_refused(kGains, "[1, 2]\n,\n", 2, 1, stall);
+  expect_refused(kScenario, ",,,, 1D\n", 1, 1, stall);
+  // after a block map yaml-cpp itself reports it
+  expect_refused(kConfig, kConfig.valid + ",\n", 9, 1, "YAML syntax error: end of map not found");
+}
+
 // yaml-cpp's parser recurses: nesting is refused at its depth guard, by name.
 TEST(OneStrictReader, DeepNestingIsRefusedByName) {
   const std::string deep = std::string(5000, '[') + std::string(5000, ']');
