@@ -2,9 +2,6 @@
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
-#include <vector>
-#include <sstream>
-#include <optional>
 
 #include <cctype>
 #include <cerrno>
@@ -12,7 +9,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <set>
+#include <sstream>
+#include <vector>
 
 #include "hinf/common/error.hpp"
 #include "hinf/common/number_text.hpp"
@@ -91,10 +91,7 @@ std::string child_path(const std::string& parent, const std::string& key) {
 }
 
 std::string YamlReader::location(const YAML::Node& node) const {
-  if (!node.IsDefined()) return source_;
-  const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return source_;
-  return source_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+  return node.IsDefined() ? location_of(node.Mark()) : source_;
 }
 
 void YamlReader::fail(const YAML::Node& at, const std::string& message) const {
