@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (config.plant.n() > kMaxOrder) return 0;
   std::string sdpa;
   try {
-    sdpa = hinf::synth::theorem1_sdpa(config.plant, "fuzz");
+    sdpa = hinf::synth::synthesis_sdpa(config.plant, config.settings, "fuzz");  // Theorem 1 or (124)
   } catch (const hinf::Error&) {
     return 0;
   }

@@ -38,7 +38,18 @@ hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Pla
   need("A_F", g.A_F, plant.n(), plant.n());
   need("B_F", g.B_F, plant.n(), plant.m());
   need("C_F", g.C_F, plant.l(), plant.n());
-  return hinf::Filter{g.A_F, g.B_F, g.C_F};
+  need("G_F", g.G_F, plant.n(), plant.r());
+  hinf::Filter f;
+  f.A_F = g.A_F;
+  f.B_F = g.B_F;
+  f.C_F = g.C_F;
+  f.G_F = g.G_F;
+  if (g.observer_form) {
+    need("K", g.K, plant.n(), plant.m());
+    f.form = hinf::FilterForm::Observer;
+    f.K = g.K;
+  }
+  return f;
 }
 
 void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
@@ -66,6 +77,14 @@ void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
 void IterationTable::operator()(const synth::IterationReport& report) {
   using synth::SolveStage;
   const sdp::Progress& r = report.progress;
+  if (r.newton_step) {  // only when the table has been quiet for a while (large problems)
+    if (r.elapsed_s - last_line_s_ < kQuietSeconds) return;
+    std::fprintf(stderr, "%5d  %4d  %10.3e  %16s  %10s  %6d  %9.2e  %7.3f  (newton iteration in progress)\n", r.phase,
+                 r.centering, r.t, "", "", r.newton, r.lambda2, r.elapsed_s);
+    last_line_s_ = r.elapsed_s;
+    return;
+  }
+  last_line_s_ = r.elapsed_s;
   if (!started_ || report.stage != stage_) {
     if (report.stage == SolveStage::Backoff)
       std::fprintf(stderr, "==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====\n");

@@ -41,8 +41,12 @@ class IterationTable {
   void operator()(const synth::IterationReport& r);
 
  private:
+  // A line per Newton iteration only after this many seconds without a line (large
+  // problems, whose centrings take minutes), so that -v shows progress within seconds.
+  static constexpr double kQuietSeconds = 2.0;
   bool started_ = false;
   synth::SolveStage stage_ = synth::SolveStage::Synthesis;
+  double last_line_s_ = 0;
 };
 
 }  // namespace hinf::cli

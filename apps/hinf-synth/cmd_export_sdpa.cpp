@@ -17,8 +17,8 @@ void add_export_sdpa(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::SynthConfig cfg = synth::load_config(*config);
-      const std::string text = synth::theorem1_sdpa(
-          cfg.plant, std::string("Theorem-1 LMI from ") + *config + " (sha256 " + cfg.sha256 +
+      const std::string text = synth::synthesis_sdpa(
+          cfg.plant, cfg.settings, std::string("from ") + *config + " (sha256 " + cfg.sha256 +
                          "), by hinf-synth " + synth::tool_version() +
                          "\nminimise gamma^2; the SDPA dual objective is gamma*^2");
       hinf::write_file_atomic(*output, text, {*config});

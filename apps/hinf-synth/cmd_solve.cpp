@@ -1,4 +1,6 @@
 // hinf-synth solve CONFIG -o GAINS.yaml [--verbose]
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "cli_support.hpp"
@@ -9,7 +11,7 @@
 namespace hinf::cli {
 
 void add_solve(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("solve", "synthesise a certified robust H-infinity filter (Theorem 1)");
+  auto* cmd = app.add_subcommand("solve", "synthesise a certified robust H-infinity filter (Theorem 1, or the observer form for plants that are not Schur stable)");
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   auto verbose = std::make_shared<bool>(false);
@@ -20,7 +22,13 @@ void add_solve(CLI::App& app, Action& action) {
     action = [=]() -> int {
       synth::SynthConfig cfg = synth::load_config(*config);
       const bool v = *verbose || cfg.settings.verbose;
-      if (v) print_coefficient_ranges(cfg.plant, stderr);
+      if (v) {
+        print_coefficient_ranges(cfg.plant, stderr);
+        const synth::ProblemSize size = synth::problem_size(cfg.plant, cfg.settings);
+        std::fprintf(stderr, "%s form: LMI order %d, %d variables; solver memory estimate %.0f MiB (limit "
+                     "max_memory_mb = %.0f)\n", to_string(size.form), size.lmi_order, size.variables,
+                     std::ceil(size.memory_mib), cfg.settings.max_memory_mb);
+      }
       const synth::SynthesisResult r =
           v ? synth::synthesize(cfg.plant, cfg.settings, IterationTable())
             : synth::synthesize(cfg.plant, cfg.settings);
@@ -37,7 +45,8 @@ void add_solve(CLI::App& app, Action& action) {
       std::cout << "gamma = " << num(r.gamma) << " (nominal Hinf norm " << num(r.certificate.hinf_norm_nominal)
                 << ", robust bound " << num(r.certificate.robust_bound) << "), certified; gains written to "
                 << *output << " [" << r.solver.newton_iterations << " Newton iterations, "
-                << num(r.solver.time_s) << " s]\n";
+                << num(r.solver.time_s) << " s]\n"
+                << "filter form: " << to_string(r.filter.form) << "; " << r.bound << "\n";
       return 0;
     };
   });

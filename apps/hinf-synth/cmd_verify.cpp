@@ -21,6 +21,13 @@ void add_verify(CLI::App& app, Action& action) {
       const synth::Verification v = synth::verify_gains(cfg, f, *g.gamma);
       const synth::Certificate& c = v.certificate;
       std::cout << "claimed gamma         " << num(*g.gamma) << "\n"
+                << "filter form           " << to_string(f.form)
+                << (f.form == hinf::FilterForm::Observer
+                        ? std::string(c.observer_mismatch <= 1e-12 ? " (A_F, B_F, C_F, G_F = A - K C, K, L, G to "
+                                                                   : " (NOT A - K C, K, L, G: relative difference ") +
+                              num(c.observer_mismatch) + ")"
+                        : std::string())
+                << "\n"
                 << "schur stable          " << (c.schur_stable ? "yes" : "NO") << " (spectral radius nominal "
                 << num(c.spectral_radius_nominal) << ", sampled max " << num(c.spectral_radius_sampled_max)
                 << " over " << c.stability_samples << " F)\n";

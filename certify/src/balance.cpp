@@ -19,10 +19,14 @@ constexpr int kMaxSweeps = 200;
 // Scales stay within 2^±kMaxExponent (no overflow of D⁻¹AD for any finite input).
 constexpr double kMaxExponent = 400;
 
-// Off-diagonal 2-norms of column i of [A; Out] and row i of [A, In].
+// Off-diagonal 2-norms of column i of [A; Out] and row i of [A, In]. An empty In or Out is
+// not indexed: Eigen's row/column of a matrix without storage offsets a null pointer
+// (undefined behaviour that clang's UBSan reports).
 void norms(const MatrixXd& A, const MatrixXd& In, const MatrixXd& Out, int i, double& c, double& r) {
-  c = std::sqrt(std::max(0.0, A.col(i).squaredNorm() - A(i, i) * A(i, i)) + Out.col(i).squaredNorm());
-  r = std::sqrt(std::max(0.0, A.row(i).squaredNorm() - A(i, i) * A(i, i)) + In.row(i).squaredNorm());
+  const double out = Out.size() > 0 ? Out.col(i).squaredNorm() : 0.0;
+  const double in = In.size() > 0 ? In.row(i).squaredNorm() : 0.0;
+  c = std::sqrt(std::max(0.0, A.col(i).squaredNorm() - A(i, i) * A(i, i)) + out);
+  r = std::sqrt(std::max(0.0, A.row(i).squaredNorm() - A(i, i) * A(i, i)) + in);
 }
 }  // namespace
 

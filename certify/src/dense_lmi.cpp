@@ -65,6 +65,29 @@ MatrixXd theorem1_matrix(const hinf::Plant& P, const Theorem1Point& x) {
   return M.matrix();
 }
 
+MatrixXd observer_lmi_matrix(const hinf::Plant& P, const ObserverPoint& x) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
+  const bool unc = P.uncertain();
+  std::vector<int> sizes{n, n, p, q, l};
+  if (unc) sizes.push_back(P.j());
+  BlockMatrix M(sizes);
+  // docs/maths.md (124), upper triangle, row by row
+  M.set(0, 0, -x.P);
+  M.set(0, 1, x.P * P.A - x.Y * P.C);
+  M.set(0, 2, x.P * P.B);
+  M.set(0, 3, -x.Y * P.D);
+  M.set(1, 1, -x.P + (unc ? MatrixXd(x.lambda * P.E.transpose() * P.E) : MatrixXd::Zero(n, n)));
+  M.set(1, 4, P.L.transpose());
+  M.set(2, 2, -x.g * MatrixXd::Identity(p, p));
+  M.set(3, 3, -x.g * MatrixXd::Identity(q, q));
+  M.set(4, 4, -MatrixXd::Identity(l, l));
+  if (unc) {
+    M.set(0, 5, x.P * P.H);
+    M.set(5, 5, -x.lambda * MatrixXd::Identity(P.j(), P.j()));
+  }
+  return M.matrix();
+}
+
 DefinitenessCheck check_negative_definite(const MatrixXd& M, double margin) {
   DefinitenessCheck c;
   const MatrixXd Ms = 0.5 * (M + M.transpose());

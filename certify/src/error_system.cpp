@@ -1,6 +1,8 @@
 // Error system docs/maths.md (9)–(11); see error_system.hpp.
 #include "hinf/certify/error_system.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -15,6 +17,23 @@ void require(bool ok, const std::string& what) {
 
 std::string dims(const Eigen::MatrixXd& M) {
   return std::to_string(M.rows()) + "×" + std::to_string(M.cols());
+}
+
+// The observer-form error system (122)–(123): e = x − x̂ with x̂(k+1) = A x̂ + G u + K(y − C x̂),
+//     e(k+1) = (A + ΔA − K C) e + B w − K D v,   z − ẑ = L e,
+// from the plant and the gain K alone (the realisation A_F, B_F, C_F, G_F is checked
+// against it by observer_form_mismatch).
+StateSpace observer_error_system(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& A_delta) {
+  const Eigen::Index n = plant.A.rows(), p = plant.B.cols(), m = plant.C.rows(), q = plant.D.cols();
+  require(filter.K.rows() == n && filter.K.cols() == m,
+          "observer gain K is " + dims(filter.K) + ", expected " + std::to_string(n) + "×" + std::to_string(m));
+  StateSpace s;
+  s.A = A_delta - filter.K * plant.C;
+  s.B.resize(n, p + q);
+  s.B << plant.B, -filter.K * plant.D;
+  s.C = plant.L;
+  s.D = Eigen::MatrixXd::Zero(plant.L.rows(), p + q);
+  return s;
 }
 
 }  // namespace
@@ -41,6 +60,7 @@ StateSpace error_system(const Plant& plant, const Filter& filter, const Eigen::M
                 std::to_string(plant.E.rows()));
     A_delta += plant.H * F * plant.E;  // A + ΔA, ΔA = H F E
   }
+  if (filter.form == FilterForm::Observer) return observer_error_system(plant, filter, A_delta);
 
   StateSpace s;
   s.A = Eigen::MatrixXd::Zero(n + nf, n + nf);  // Ā = [A+ΔA, 0; B_F C, A_F]
@@ -54,6 +74,28 @@ StateSpace error_system(const Plant& plant, const Filter& filter, const Eigen::M
   s.C << plant.L, -filter.C_F;
   s.D = Eigen::MatrixXd::Zero(l, p + q);
   return s;
+}
+
+double observer_form_mismatch(const Plant& plant, const Filter& filter) {
+  const Eigen::Index n = plant.A.rows(), m = plant.C.rows();
+  if (filter.K.rows() != n || filter.K.cols() != m || filter.A_F.rows() != n || filter.A_F.cols() != n ||
+      filter.B_F.rows() != n || filter.B_F.cols() != m || filter.C_F.rows() != plant.L.rows() ||
+      filter.C_F.cols() != n)
+    return INFINITY;
+  const Eigen::MatrixXd G = plant.G.size() > 0 ? plant.G : Eigen::MatrixXd::Zero(n, 0);
+  const Eigen::MatrixXd GF = filter.G_F.size() > 0 ? filter.G_F : Eigen::MatrixXd::Zero(n, 0);
+  if (G.cols() != GF.cols() || GF.rows() != n) return INFINITY;
+  // each entry against the size of the products that form it
+  const Eigen::MatrixXd scale_A = plant.A.cwiseAbs() + filter.K.cwiseAbs() * plant.C.cwiseAbs();
+  auto worst = [](const Eigen::MatrixXd& diff, const Eigen::MatrixXd& scale) {
+    double w = 0;
+    for (Eigen::Index i = 0; i < diff.size(); ++i)
+      w = std::max(w, std::abs(diff(i)) / std::max(scale(i), 1e-300));
+    return w;
+  };
+  return std::max({worst(filter.A_F - (plant.A - filter.K * plant.C), scale_A),
+                   worst(filter.B_F - filter.K, filter.K.cwiseAbs()),
+                   worst(filter.C_F - plant.L, plant.L.cwiseAbs()), worst(GF - G, G.cwiseAbs())});
 }
 
 }  // namespace hinf::certify

@@ -40,13 +40,6 @@ void validate_nominal(const Plant& plant) {
     msg << "non-finite plant entry";
   if (!msg.str().empty())
     throw Error(ErrorCode::InvalidInput, "H∞ predictor Riccati: " + msg.str());
-  const double rho = spectral_radius(plant.A);
-  if (!(rho < 1.0)) {
-    std::ostringstream m;
-    m.precision(17);
-    m << "H∞ predictor Riccati: A is not Schur stable (spectral radius " << rho << " >= 1)";
-    throw Error(ErrorCode::Infeasible, m.str());
-  }
 }
 
 double min_eigenvalue(const Eigen::MatrixXd& S) {
@@ -156,9 +149,12 @@ HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
   // K = A P̃ Cᵀ (R + C P̃ Cᵀ)⁻¹, computed as Kᵀ = (R + C P̃ Cᵀ)⁻¹ C P̃ Aᵀ.
   const Eigen::MatrixXd Re = R + C * Ptilde * C.transpose();
   const Eigen::MatrixXd K = Re.llt().solve(C * Ptilde * A.transpose()).transpose();
+  out.filter.form = FilterForm::Observer;  // (59): x̂(k+1) = A x̂ + G u + K (y − C x̂)
+  out.filter.K = K;
   out.filter.A_F = A - K * C;
   out.filter.B_F = K;
   out.filter.C_F = L;
+  out.filter.G_F = plant.G.size() > 0 ? plant.G : Eigen::MatrixXd::Zero(n, 0);
   out.feasible = true;
   return out;
 }

@@ -298,6 +298,11 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
                                              std::to_string(gains.C_F.cols()));
   if (!gains.A_F.allFinite() || !gains.B_F.allFinite() || !gains.C_F.allFinite())
     throw Error(ErrorCode::InvalidInput, "the filter matrices contain non-finite entries");
+  if (gains.G_F.cols() > 0)
+    throw Error(ErrorCode::InvalidInput,
+                "the filter has a known input (filter.G_F, " + std::to_string(gains.G_F.cols()) +
+                    " columns), which the generated C does not take yet: its step function has no u argument, "
+                    "and C without it would fly a different filter; use the runtime's LtiFilter::step(y, u)");
 
   const FilterData data = detail::make_filter_data(gains, options.real);
   const TestVectors tv = detail::make_test_vectors(data, options.real,

@@ -2,6 +2,7 @@
 // two engines: Ipopt (ipopt_centering.hpp, all of phase I and most of phase II) and the
 // damped Newton on the QR step (damped_newton.hpp, the end of phase II).
 #pragma once
+#include <functional>
 #include <Eigen/Dense>
 #include <string>
 
@@ -33,6 +34,9 @@ struct CenteringOptions {
   // (gᵀH⁻¹g < 0): the steps are no longer accurate Newton steps.
   bool stop_on_inexact_newton = false;
   bool derivative_test = false;   // run Ipopt's second-order derivative test (tests only)
+  // Called after every Newton iteration with its index and λ² (NaN where the explicit
+  // Hessian was found indefinite), for progress output on large problems; may be empty.
+  std::function<void(int newton, double lambda2)> on_newton_step;
 };
 
 }  // namespace hinf::sdp

@@ -40,6 +40,7 @@ CenteringResult damped_newton_centre(LogDetBarrier& barrier, const Eigen::Vector
       return r;
     }
     r.lambda2 = l2;
+    if (opt.on_newton_step) opt.on_newton_step(k, l2);
     if (l2 <= opt.lambda2_tol) {
       r.centred = true;
       r.status = "centred";

@@ -115,7 +115,9 @@ class CenteringTnlp : public Ipopt::TNLP {
       return false;
     }
     double l2 = 0;
-    if (!barrier_.newton_decrement2(last_grad_z_, l2)) {
+    const bool definite = barrier_.newton_decrement2(last_grad_z_, l2);
+    if (opt_.on_newton_step) opt_.on_newton_step(iter, definite ? l2 : std::numeric_limits<double>::quiet_NaN());
+    if (!definite) {
       ++indefinite_;
       // The explicit Hessian has turned numerically indefinite: its round-off has reached
       // its smallest eigenvalues, and Ipopt's steps are no longer Newton steps.

@@ -108,7 +108,7 @@ class PathFollower {
   // (phase I: a strictly feasible point; phase II: the gap goal). z is the final point.
   bool follow(LogDetBarrier& b, VectorXd& z, Phase phase);
   double initial_t(LogDetBarrier& b, const VectorXd& z) const;
-  CenteringOptions centering_options(const LogDetBarrier& b, Phase phase) const;
+  CenteringOptions centering_options(const LogDetBarrier& b, Phase phase, int centring) const;
   CenteringResult centre(LogDetBarrier& b, const VectorXd& z, Phase phase, const CenteringOptions& co);
   Recovery recover(LogDetBarrier& b, Phase phase);
   double accurate_gap(LogDetBarrier& b, const VectorXd& z, double t) const;
@@ -183,8 +183,15 @@ double PathFollower::last_relative_gap(const LogDetBarrier& b) const {
   return s_.last_gap / std::max(std::abs(b.linear_objective(s_.last_centred)), kObjectiveFloor);
 }
 
-CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase phase) const {
+CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase phase, int centring) const {
   CenteringOptions co;
+  if (observer_) {  // every Newton iteration, so that a large problem shows progress at once
+    co.on_newton_step = [this, phase, centring](int newton, double lambda2) {
+      Progress p{static_cast<int>(phase), centring, s_.t, NAN, NAN, newton, lambda2, seconds_since(start_)};
+      p.newton_step = true;
+      observer_(p);
+    };
+  }
   co.max_iterations = std::min(opt_.max_newton_per_centering,
                                std::max(1, opt_.max_iterations - sol_.newton_total));
   if (s_.last_stalled && phase == Phase::Minimise &&
@@ -275,7 +282,7 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
   const bool minimise = phase == Phase::Minimise;
   for (int k = 0;; ++k) {
     b.set_t(s_.t);
-    const CenteringResult r = centre(b, z, phase, centering_options(b, phase));
+    const CenteringResult r = centre(b, z, phase, centering_options(b, phase, k));
     sol_.newton_total += r.iterations;
     if (!minimise) sol_.newton_phase1 += r.iterations;
     ++sol_.centerings;

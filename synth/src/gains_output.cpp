@@ -33,7 +33,7 @@ void kv(YAML::Emitter& out, const char* key, const T& v) {
 }
 
 // The certificate, check by check (docs/maths.md §7), then the recovery's conditioning.
-void emit_certificate(YAML::Emitter& out, const Certificate& c) {
+void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form) {
   out << YAML::Key << "certificate" << YAML::Value << YAML::BeginMap;
   kv(out, "passed", c.passed);
   kv(out, "gamma", c.gamma);
@@ -51,8 +51,13 @@ void emit_certificate(YAML::Emitter& out, const Certificate& c) {
   kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
   kv(out, "robust_multiplier", c.robust_multiplier);
   kv(out, "robust_scaled_norm", c.robust_scaled_norm);
-  kv(out, "cond_S", c.cond_S);
-  kv(out, "cond_R_minus_S", c.cond_R_minus_S);
+  if (form == FilterForm::Observer) {
+    kv(out, "observer_mismatch", c.observer_mismatch);
+    kv(out, "cond_P", c.cond_P);
+  } else {
+    kv(out, "cond_S", c.cond_S);
+    kv(out, "cond_R_minus_S", c.cond_R_minus_S);
+  }
   kv(out, "norm_A_F", c.norm_A_F);
   kv(out, "norm_B_F", c.norm_B_F);
   kv(out, "norm_C_F", c.norm_C_F);
@@ -105,15 +110,20 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   kv(out, "n", static_cast<int>(r.filter.A_F.rows()));
   kv(out, "m", static_cast<int>(r.filter.B_F.cols()));
   kv(out, "l", static_cast<int>(r.filter.C_F.rows()));
+  if (r.filter.G_F.cols() > 0) kv(out, "r", static_cast<int>(r.filter.G_F.cols()));
   out << YAML::EndMap;
   kv(out, "gamma", r.gamma);
   kv(out, "gamma_squared", r.gamma_squared);
+  if (!r.bound.empty()) kv(out, "bound", r.bound);
   out << YAML::Key << "filter" << YAML::Value << YAML::BeginMap;
+  kv(out, "form", to_string(r.filter.form));
   emit_matrix(out, "A_F", r.filter.A_F);
   emit_matrix(out, "B_F", r.filter.B_F);
   emit_matrix(out, "C_F", r.filter.C_F);
+  if (r.filter.form == FilterForm::Observer) emit_matrix(out, "K", r.filter.K);
+  if (r.filter.G_F.cols() > 0) emit_matrix(out, "G_F", r.filter.G_F);
   out << YAML::EndMap;
-  emit_certificate(out, r.certificate);
+  emit_certificate(out, r.certificate, r.filter.form);
   emit_solver(out, r.solver);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";

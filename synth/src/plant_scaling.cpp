@@ -96,20 +96,35 @@ Plant scaled_plant(const Plant& P, const PlantScaling& s) {
   q.L = s.output * P.L * D;
   q.H = Dinv * P.H * s.uncertainty;
   q.E = P.E * D / s.uncertainty;
+  q.G = Dinv * P.G;  // the known input u keeps its units
   return q;
 }
 
-// ỹ = T y, ẑ̃ = σ_z ẑ, x_F = D x̃_F (eq. (111)).
+// ỹ = T y, ẑ̃ = σ_z ẑ, x_F = D x̃_F (eq. (111)); an observer's K maps as B_F, G_F as G.
 Filter scaled_filter(const Filter& F, const PlantScaling& s) {
   const auto Dinv = s.state.cwiseInverse().asDiagonal();
   const auto D = s.state.asDiagonal();
-  return Filter{Dinv * F.A_F * D, Dinv * F.B_F * s.measurement.cwiseInverse().asDiagonal(), s.output * F.C_F * D};
+  const auto Tinv = s.measurement.cwiseInverse().asDiagonal();
+  Filter f = F;
+  f.A_F = Dinv * F.A_F * D;
+  f.B_F = Dinv * F.B_F * Tinv;
+  f.C_F = s.output * F.C_F * D;
+  if (F.K.size() > 0) f.K = Dinv * F.K * Tinv;
+  if (F.G_F.size() > 0) f.G_F = Dinv * F.G_F;
+  return f;
 }
 
 Filter user_filter(const Filter& F, const PlantScaling& s) {
   const auto Dinv = s.state.cwiseInverse().asDiagonal();
   const auto D = s.state.asDiagonal();
-  return Filter{D * F.A_F * Dinv, D * F.B_F * s.measurement.asDiagonal(), F.C_F * Dinv / s.output};
+  const auto T = s.measurement.asDiagonal();
+  Filter f = F;
+  f.A_F = D * F.A_F * Dinv;
+  f.B_F = D * F.B_F * T;
+  f.C_F = F.C_F * Dinv / s.output;
+  if (F.K.size() > 0) f.K = D * F.K * T;
+  if (F.G_F.size() > 0) f.G_F = D * F.G_F;
+  return f;
 }
 
 }  // namespace hinf::synth

@@ -78,16 +78,21 @@ Theorem1Lmi build_theorem1(const Plant& P) { return build(P, nullptr); }
 
 Theorem1Lmi build_theorem1_backoff(const Plant& P, double g_fixed) { return build(P, &g_fixed); }
 
-std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const Plant& plant) {
+std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi, lmi::VarId lambda, int block,
+                                                     const Plant& plant) {
   std::vector<lmi::SparseEntry> err;
-  if (!plant.uncertain()) return err;
   const double u = std::numeric_limits<double>::epsilon() / 2, k = plant.k() + 1;
   const MatrixXd bound = k * u / (1 - k * u) * (1 + 4 * u) * (plant.E.cwiseAbs().transpose() * plant.E.cwiseAbs());
-  const int param = T.lmi.variable(T.lambda).offset, off = T.lmi.block_offset(2);
+  const int param = lmi.variable(lambda).offset, off = lmi.block_offset(block);
   for (int c = 0; c < plant.n(); ++c)
     for (int r = 0; r <= c; ++r)
       if (bound(r, c) > 0) err.push_back({param, off + r, off + c, bound(r, c)});
   return err;
+}
+
+std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const Plant& plant) {
+  if (!plant.uncertain()) return {};
+  return rounded_EtE_basis_error(T.lmi, T.lambda, 2, plant);
 }
 
 certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, const Eigen::VectorXd& x,
@@ -107,14 +112,18 @@ Filter recover_filter(const certify::Theorem1Point& pt) {
   const Eigen::LLT<MatrixXd> S(pt.S);
   if (S.info() != Eigen::Success)
     throw Error(ErrorCode::NumericalFailure, "recovery: S is not positive definite at the solution");
-  return Filter{S.solve(pt.AF_bar), S.solve(pt.BF_bar), pt.CF_bar};
+  Filter f;
+  f.A_F = S.solve(pt.AF_bar);
+  f.B_F = S.solve(pt.BF_bar);
+  f.C_F = pt.CF_bar;
+  return f;
 }
 
 AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
-  const int n2 = 2 * n;
-  const StateSpace es = certify::error_system(P, F);  // Ā, B̄, C̄: docs/maths.md (9)–(11)
+  const StateSpace es = certify::error_system(P, F);  // Ā, B̄, C̄: docs/maths.md (9)–(11), or (122)–(123)
+  const int n2 = static_cast<int>(es.A.rows());        // 2n, or n for an observer-form filter
   const MatrixXd& A0 = es.A;
   const MatrixXd& Bb = es.B;
   const MatrixXd& Cb = es.C;

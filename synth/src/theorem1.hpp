@@ -25,6 +25,9 @@ Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double g_fixed);
 // Entrywise bounds on |Mᵢ − M̂ᵢ| between LMI (18) and the stored one: only λ's EᵀE (block
 // (3,3)) is a rounded product, |fl(EᵀE) − EᵀE| ≤ γ_k|E|ᵀ|E|; for sdp::verified_bracket.
 std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const hinf::Plant& plant);
+// The same bound for any LMI whose diagonal block `block` holds λ·EᵀE (Theorem 1, (50), (124)).
+std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi, lmi::VarId lambda, int block,
+                                                     const hinf::Plant& plant);
 
 // The Theorem-1 variables at a solution x of T's LMI, with g = γ² (fixed in the back-off
 // problem, the objective otherwise).
@@ -46,7 +49,8 @@ struct AnalysisLmi {
 //   [  ∗   ∗         −gI    0    0   ]   < 0
 //   [  ∗   ∗          ∗    −I    0   ]
 //   [  ∗   ∗          ∗     ∗   −λI  ]
-// with the error system of docs/maths.md (9)–(11), H̄ = [H; 0], Ē = [E, 0].
+// with the error system of docs/maths.md (9)–(11), H̄ = [H; 0], Ē = [E, 0] (blocks n instead of 2n,
+// H̄ = H, Ē = E, for an observer-form filter: (122)–(123)).
 AnalysisLmi build_analysis_lmi(const hinf::Plant& plant, const hinf::Filter& filter);
 
 }  // namespace hinf::synth

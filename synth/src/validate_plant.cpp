@@ -1,5 +1,6 @@
 // Structural checks of the uncertain plant of docs/maths.md (1)–(4):
-//   A n×n, B n×p, C m×n, D m×q, L l×n, H n×j, E k×n (H and E both present or both absent).
+//   A n×n, B n×p, C m×n, D m×q, L l×n, H n×j, E k×n (H and E both present or both absent),
+//   G n×r (optional known input, (120)).
 #include <cmath>
 #include <string>
 
@@ -86,6 +87,8 @@ void validate_plant(const Plant& plant) {
     require_cols(plant.E, "E", n, "n from A");
   }
 
+  if (plant.G.size() > 0) require_rows(plant.G, "G", n, "n from A");
+
   require_finite(A, "A");
   require_finite(plant.B, "B");
   require_finite(plant.C, "C");
@@ -93,6 +96,7 @@ void validate_plant(const Plant& plant) {
   require_finite(plant.L, "L");
   require_finite(plant.H, "H");
   require_finite(plant.E, "E");
+  require_finite(plant.G, "G");
 }
 
 }  // namespace hinf::synth

@@ -318,7 +318,9 @@ TEST(DiscreteHinfNorm, FortyEightStatesIsFastAndCorrect) {
   const hinf::Plant plant = random_nominal_plant(24, 6, 3, 6, 0.98, 4242);
   const hinf::certify::HinfPredictorLevel kf = hinf::certify::hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
   ASSERT_TRUE(kf.feasible) << kf.reason;
-  const hinf::StateSpace es = hinf::certify::error_system(plant, kf.filter);
+  hinf::Filter augmented = kf.filter;  // the (x, x_F) error system (10), not the observer's (122)
+  augmented.form = hinf::FilterForm::Augmented;
+  const hinf::StateSpace es = hinf::certify::error_system(plant, augmented);
   ASSERT_EQ(es.A.rows(), 48);
   hinf::certify::HinfNorm res;
   const int reps = 10;
@@ -582,15 +584,15 @@ TEST(RiccatiFilter, LocalSearchOverSecondOrderFiltersCannotBeatGammaStar) {
   EXPECT_LE(best, opt.gamma * 1.05);
 }
 
-TEST(RiccatiFilter, RejectsUnstablePlantAndSingularNoise) {
+TEST(RiccatiFilter, UnstableDetectablePlantHasAnObserverFormPredictorAndUndetectableNoneExists) {
+  // x(k+1) = 1.01 x + w, y = x + v, z = x: the predictor is in observer form and exists
+  // (docs/maths.md §18.3); its optimum is the closed form (127) at the dead-beat gain κ = a.
   hinf::Plant pl = scalar_plant(1.01, 1, 1, 1, 1);
-  try {
-    hinf::certify::optimal_hinf_predictor_gamma(pl, 1e-6);
-    FAIL() << "no exception";
-  } catch (const hinf::Error& e) {
-    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
-    EXPECT_NE(std::string(e.what()).find("spectral radius"), std::string::npos);
-  }
+  const hinf::certify::HinfPredictorOptimum opt = hinf::certify::optimal_hinf_predictor(pl, 1e-10);
+  EXPECT_NEAR(opt.gamma / std::sqrt(1 + 1.01 * 1.01), 1.0, 1e-8);
+  EXPECT_EQ(opt.at_gamma.filter.form, hinf::FilterForm::Observer);
+  pl = scalar_plant(1.01, 1, 0, 1, 1);  // not measured: undetectable, no stabilising DARE solution
+  EXPECT_THROW(hinf::certify::optimal_hinf_predictor_gamma(pl, 1e-6), hinf::Error);
   pl = scalar_plant(0.5, 1, 1, 0, 1);
   EXPECT_THROW(hinf::certify::optimal_hinf_predictor_gamma(pl, 1e-6), hinf::Error);
 }

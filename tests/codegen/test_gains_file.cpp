@@ -215,3 +215,24 @@ TEST(GainsFile, MakeLtiFilter) {
 }
 
 }  // namespace
+
+// The observer form (docs/maths.md (121)): filter.form, filter.K (required there and only
+// there), filter.G_F and dimensions.r.
+TEST(GainsFile, ObserverFormKeys) {
+  const std::string observer =
+      replace(kGood, "filter:\n", "filter:\n  form: observer\n  K: [[1], [2e-3]]\n  G_F: [[0.5], [1]]\n");
+  const auto g = parse_gains_yaml(replace(observer, "{n: 2, m: 1, l: 1}", "{n: 2, m: 1, l: 1, r: 1}"), "g.yaml");
+  EXPECT_TRUE(g.observer_form);
+  EXPECT_EQ(g.K(1, 0), 2e-3);
+  EXPECT_EQ(g.G_F.rows(), 2);
+  EXPECT_EQ(g.G_F(0, 0), 0.5);
+  EXPECT_FALSE(parse_gains_yaml(kGood, "g.yaml").observer_form);
+  EXPECT_EQ(parse_gains_yaml(kGood, "g.yaml").G_F.cols(), 0);
+  EXPECT_HAS(error_for(replace(observer, "  K: [[1], [2e-3]]\n", "")), "missing key 'filter.K'");
+  EXPECT_HAS(error_for(replace(kGood, "filter:\n", "filter:\n  K: [[1], [2]]\n")),
+             "filter.K: only an observer-form filter");
+  EXPECT_HAS(error_for(replace(observer, "K: [[1], [2e-3]]", "K: [[1, 2], [3, 4]]")), "filter.K: expected 2x1");
+  EXPECT_HAS(error_for(replace(observer, "G_F: [[0.5], [1]]", "G_F: [[0.5]]")), "filter.G_F: expected 2 rows");
+  EXPECT_HAS(error_for(replace(observer, "form: observer", "form: observr")), "filter.form");
+  EXPECT_HAS(error_for(replace(observer, "{n: 2, m: 1, l: 1}", "{n: 2, m: 1, l: 1, r: 2}")), "r");
+}

@@ -35,7 +35,11 @@ hinf::Filter other_realisation(const hinf::Filter& f) {
   for (int i = 0; i < n; ++i) T(i, (i + 1) % n) += 0.5 * (i + 1);
   T.diagonal() *= 3.0;
   const MatrixXd Ti = T.inverse();
-  return hinf::Filter{T * f.A_F * Ti, T * f.B_F, f.C_F * Ti};
+  hinf::Filter g = f;
+  g.A_F = T * f.A_F * Ti;
+  g.B_F = T * f.B_F;
+  g.C_F = f.C_F * Ti;
+  return g;
 }
 
 TEST(RegressionPolicy, AnotherRealisationIsTheSameResult) {

@@ -98,9 +98,10 @@ TEST(Solver, Deterministic) {
   EXPECT_EQ(a.solver.newton_iterations, b.solver.newton_iterations);
 }
 
-void expect_infeasible(const Plant& P, const std::string& must_contain, const std::string& number) {
+void expect_infeasible(const Plant& P, const std::string& must_contain, const std::string& number,
+                       const Settings& settings = Settings{}) {
   try {
-    (void)hinf::synth::synthesize(P, Settings{});
+    (void)hinf::synth::synthesize(P, settings);
     FAIL() << "no error for an ill-posed plant";
   } catch (const hinf::Error& e) {
     EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible) << e.what();
@@ -113,7 +114,10 @@ void expect_infeasible(const Plant& P, const std::string& must_contain, const st
 TEST(Solver, UnstablePlantRefusedWithSpectralRadius) {
   Plant P = example_plant();
   P.A << 1.05, 0.0, 0.3, 0.5;  // eigenvalues 1.05 and 0.5
-  expect_infeasible(P, "spectral radius", "1.05");
+  Settings augmented;  // Theorem 1's filter does not exist; the observer form does (docs/maths.md §18)
+  augmented.form = hinf::synth::FormChoice::Augmented;
+  expect_infeasible(P, "spectral radius", "1.05", augmented);
+  EXPECT_EQ(hinf::synth::synthesize(P, Settings{}).filter.form, hinf::FilterForm::Observer);
 }
 
 TEST(Solver, NotRobustlyStableRefused) {

@@ -25,7 +25,7 @@ const std::vector<std::string>& allowed_top_level_keys() {
   static const std::vector<std::string> keys{"format",        "tool",   "config_sha256",
                                              "dimensions",    "gamma",  "gamma_squared",
                                              "filter",        "certificate", "solver",
-                                             "timing"};
+                                             "timing",        "bound"};
   return keys;
 }
 
@@ -53,13 +53,22 @@ void read_header(const YamlMap& top, GainsFile& g) {
   if (top.has("gamma_squared")) top.positive("gamma_squared");
 }
 
-// filter: {A_F: n×n, B_F: n×m, C_F: l×n} (docs/maths.md (5)-(6)), nested rows only.
+// filter: {form, A_F: n×n, B_F: n×m, C_F: l×n, K: n×m, G_F: n×r} (docs/maths.md (5)-(6),
+// (121)), nested rows only; K only (and then required) in observer form.
 void read_filter(const YamlMap& top, GainsFile& g) {
   top.required("filter", "expected 'filter: {A_F: ..., B_F: ..., C_F: ...}'");
-  const YamlMap filter = top.map("filter", {"A_F", "B_F", "C_F"});
+  const YamlMap filter = top.map("filter", {"form", "A_F", "B_F", "C_F", "K", "G_F"});
+  g.observer_form = filter.choice("form", {"augmented", "observer"}, "augmented") == "observer";
   g.A_F = filter.matrix("A_F", MatrixForms::RowsOnly);
   g.B_F = filter.matrix("B_F", MatrixForms::RowsOnly);
   g.C_F = filter.matrix("C_F", MatrixForms::RowsOnly);
+  if (g.observer_form) {
+    filter.required("K", "an observer-form filter carries its gain K (A_F = A - K C, B_F = K)");
+    g.K = filter.matrix("K", MatrixForms::RowsOnly);
+  } else if (filter.has("K")) {
+    filter.fail("K", "only an observer-form filter (filter.form: observer) has a gain K");
+  }
+  g.G_F = filter.has("G_F") ? filter.matrix("G_F", MatrixForms::RowsOnly) : Eigen::MatrixXd::Zero(g.A_F.rows(), 0);
   const std::string n = std::to_string(g.A_F.rows());
   if (g.A_F.cols() != g.A_F.rows())
     filter.fail("A_F", "must be square (n x n), got " + dims(g.A_F));
@@ -69,19 +78,24 @@ void read_filter(const YamlMap& top, GainsFile& g) {
   if (g.C_F.cols() != g.A_F.rows())
     filter.fail("C_F", "expected " + n + " columns (l x n, n = " + n +
                            " from filter.A_F), got " + dims(g.C_F));
+  if (g.observer_form && (g.K.rows() != g.B_F.rows() || g.K.cols() != g.B_F.cols()))
+    filter.fail("K", "expected " + dims(g.B_F) + " (the shape of filter.B_F), got " + dims(g.K));
+  if (filter.has("G_F") && g.G_F.rows() != g.A_F.rows())
+    filter.fail("G_F", "expected " + n + " rows (n x r, n = " + n + " from filter.A_F), got " + dims(g.G_F));
 }
 
 // dimensions: {n, m, l} (optional, each optional): positive and as the matrices say.
 void check_dimensions(const YamlMap& top, const GainsFile& g) {
   if (!top.has("dimensions")) return;
-  const YamlMap d = top.map("dimensions", {"n", "m", "l"});
+  const YamlMap d = top.map("dimensions", {"n", "m", "l", "r"});
   const struct {
     const char* key;
     Eigen::Index actual;
     const char* from;
   } checks[] = {{"n", g.A_F.rows(), "rows of filter.A_F"},
                 {"m", g.B_F.cols(), "columns of filter.B_F"},
-                {"l", g.C_F.rows(), "rows of filter.C_F"}};
+                {"l", g.C_F.rows(), "rows of filter.C_F"},
+                {"r", g.G_F.cols(), "columns of filter.G_F"}};
   for (const auto& c : checks) {
     if (!d.has(c.key)) continue;
     const int declared = d.integer(c.key);

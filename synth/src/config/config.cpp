@@ -61,7 +61,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   const YAML::Node root =
       reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
-  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver"});
+  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter"});
 
   const YAML::Node system = root["system"];
   const YAML::Node hill = root["hill"];
@@ -87,6 +87,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
       config.settings = read_solver_section(reader, solver);
       located(reader, root, solver_key, [&] { config.settings.validate(); });
     }
+    if (const YAML::Node filter = root["filter"]) config.settings.form = read_filter_section(reader, filter);
   } catch (const YAML::Exception& e) {  // should not happen: every access is checked
     throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());
   }

@@ -9,7 +9,7 @@
 
 namespace hinf::synth {
 
-// `system:` (A, B, C, D, L) and the optional `uncertainty:` (H, E); `uncertainty` may be
+// `system:` (A, B, C, D, L, optional G) and the optional `uncertainty:` (H, E); `uncertainty` may be
 // an undefined node. Entries are checked here; shapes by validate_plant (the caller).
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty);
@@ -19,5 +19,8 @@ HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill
 
 // `solver:`; one key per field of Settings; ranges are checked by Settings::validate.
 Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver);
+
+// `filter:` {form: auto | augmented | observer} (docs/maths.md §18.4).
+FormChoice read_filter_section(const YamlReader& reader, const YAML::Node& filter);
 
 }  // namespace hinf::synth

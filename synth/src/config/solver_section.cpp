@@ -1,4 +1,4 @@
-// `solver:`: one key per field of hinf::synth::Settings, spelt as the field.
+// `solver:`: one key per field of hinf::synth::Settings, spelt as the field; `filter:`, its form.
 #include "config/sections.hpp"
 
 namespace hinf::synth {
@@ -28,6 +28,12 @@ Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver)
   if (const YAML::Node n = solver["seed"]) s.seed = reader.unsigned_integer(n, "solver.seed");
   if (const YAML::Node n = solver["verbose"]) s.verbose = reader.boolean(n, "solver.verbose");
   return s;
+}
+
+FormChoice read_filter_section(const YamlReader& reader, const YAML::Node& filter) {
+  const YamlMap f = reader.map(filter, "filter", {"form"});
+  const std::string form = f.choice("form", {"auto", "augmented", "observer"}, "auto");
+  return form == "observer" ? FormChoice::Observer : form == "augmented" ? FormChoice::Augmented : FormChoice::Auto;
 }
 
 }  // namespace hinf::synth

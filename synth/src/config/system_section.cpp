@@ -1,4 +1,4 @@
-// `system:` + `uncertainty:` (docs/maths.md (1)–(4): x(k+1) = (A + H F E) x + B w,
+// `system:` + `uncertainty:` (docs/maths.md (1)–(4), (120): x(k+1) = (A + H F E) x + G u + B w,
 // y = C x + D v, z = L x).
 #include "config/sections.hpp"
 
@@ -18,13 +18,14 @@ Eigen::MatrixXd required_matrix(const YamlReader& reader, const YAML::Node& sect
 
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty) {
-  reader.check_map(system, "system", {"A", "B", "C", "D", "L"});
+  reader.check_map(system, "system", {"A", "B", "C", "D", "L", "G"});
   Plant plant;
   plant.A = required_matrix(reader, system, "system", "A", "n x n state matrix");
   plant.B = required_matrix(reader, system, "system", "B", "n x p process-noise input");
   plant.C = required_matrix(reader, system, "system", "C", "m x n measurement matrix");
   plant.D = required_matrix(reader, system, "system", "D", "m x q measurement-noise input");
   plant.L = required_matrix(reader, system, "system", "L", "l x n estimated signal");
+  plant.G = system["G"] ? reader.matrix(system["G"], "system.G") : Eigen::MatrixXd::Zero(plant.A.rows(), 0);
   if (uncertainty) {
     reader.check_map(uncertainty, "uncertainty", {"H", "E"});
     const char* both = "Delta A = H F E needs both H and E";

@@ -1,4 +1,4 @@
-// Dense, direct assembly of LMI (18) of docs/maths.md in the user's units, written
+// Dense, direct assembly of LMI (18) (and of the observer-form LMI (124)) of docs/maths.md in the user's units, written
 // independently of the generic LMI layer the solver uses, so that the certificate
 // does not trust the solver's own data structures (docs/maths.md §7: independent checks).
 #pragma once
@@ -16,6 +16,14 @@ struct Theorem1Point {
 
 // LMI (18) of docs/maths.md at a point (blocks n, n, n, n, p, q, l[, j]).
 Eigen::MatrixXd theorem1_matrix(const hinf::Plant& plant, const Theorem1Point& x);
+
+// The observer-form LMI (124) of docs/maths.md at a point (blocks n, n, p, q, l[, j]).
+struct ObserverPoint {
+  Eigen::MatrixXd P, Y;  // Y = P K
+  double lambda = 0;     // unused without uncertainty
+  double g = 0;          // γ²
+};
+Eigen::MatrixXd observer_lmi_matrix(const hinf::Plant& plant, const ObserverPoint& x);
 
 struct DefinitenessCheck {
   double max_eig = 0;           // largest eigenvalue of M (to relative accuracy when M ≺ 0)

@@ -11,7 +11,15 @@ namespace hinf::certify {
 
 // F is j×k; an empty F (0×0) means the nominal system ΔA = 0. Throws Error(InvalidInput)
 // on inconsistent dimensions of the plant, the filter or F.
+// For an observer-form filter (filter.form) it is the n-state system of docs/maths.md
+// (122)–(123) instead: (A + ΔA − K C, [B, −K D], L), built from the plant and filter.K; the
+// uncertainty then acts on the error dynamics (H̄ = H, Ē = E).
 StateSpace error_system(const Plant& plant, const Filter& filter,
                         const Eigen::MatrixXd& F = Eigen::MatrixXd());
+
+// How far an observer-form filter's realisation is from (A − K C, K, L, G) of docs/maths.md
+// (121): the largest entrywise difference, each relative to the magnitude of the terms that
+// form it (+∞ on a dimension mismatch). Rounding of A − K C gives ~1e-16.
+double observer_form_mismatch(const Plant& plant, const Filter& filter);
 
 }  // namespace hinf::certify

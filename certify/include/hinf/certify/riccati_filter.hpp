@@ -8,8 +8,11 @@
 // Plant (nominal, H and E ignored):  x(k+1) = A x + B w,  y = C x + D v,  z = L x.
 // Estimate of z(k) from y(0..k−1) (docs/maths.md (6): z_F(k) = C_F x_F(k)). Cost: the ℓ₂ gain
 // from τ = [w; v] to e = z − ẑ, zero initial state (the H∞ norm of the error system).
-// Assumptions: A Schur stable, R = D Dᵀ > 0 (D of full row rank; then
-// min{‖v‖ : D v = r} = ‖r‖_{R⁻¹}, so only R matters).
+// Assumptions: R = D Dᵀ > 0 (D of full row rank; then min{‖v‖ : D v = r} = ‖r‖_{R⁻¹}, so only
+// R matters). A need not be Schur stable: the central filter is in observer form, whose error
+// e = x − x̂ obeys (A − K C, [B, −K D], L) (docs/maths.md (122)); for an unstable A the DARE has
+// a stabilising solution only if (A, C) is detectable (and no mode on the unit circle is
+// unreachable from w), which the test below decides.
 //
 // Level γ is achievable by a causal predictor iff (a priori conditions):
 //   (i)  the DARE  P = A P Aᵀ + B Bᵀ − A P Hᵀ (R_γ + H P Hᵀ)⁻¹ H P Aᵀ,
@@ -43,7 +46,7 @@ struct HinfPredictorLevel {
 
 // Riccati test at a given level (gamma = std::numeric_limits<double>::infinity() gives
 // the Kalman predictor). Throws Error(InvalidInput) for bad dimensions, R not positive
-// definite or gamma ≤ 0; Error(Infeasible) naming ρ(A) if A is not Schur stable.
+// definite or gamma ≤ 0. The filter is returned in observer form (form, K, G_F set).
 HinfPredictorLevel hinf_predictor_at_level(const Plant& nominal, double gamma);
 
 struct HinfPredictorOptimum {

@@ -1,9 +1,10 @@
-// The uncertain discrete-time plant of docs/maths.md (1)–(4):
-//   x(k+1) = (A + H F(k) E) x(k) + B w(k),  y(k) = C x(k) + D v(k),  z(k) = L x(k),
+// The uncertain discrete-time plant of docs/maths.md (1)–(4), with the known input of (120):
+//   x(k+1) = (A + H F(k) E) x(k) + G u(k) + B w(k),  y(k) = C x(k) + D v(k),  z(k) = L x(k),
 //   F(k)ᵀF(k) ≤ I.
 #pragma once
 #include <Eigen/Dense>
 #include <string>
+#include <utility>
 
 namespace hinf {
 
@@ -15,6 +16,7 @@ struct Plant {
   Eigen::MatrixXd L;  // l×n
   Eigen::MatrixXd H;  // n×j  (0 columns: no uncertainty)
   Eigen::MatrixXd E;  // k×n  (0 rows: no uncertainty)
+  Eigen::MatrixXd G;  // n×r  known input u, which the filter receives too (0 columns: none)
 
   int n() const { return static_cast<int>(A.rows()); }
   int p() const { return static_cast<int>(B.cols()); }
@@ -23,14 +25,33 @@ struct Plant {
   int l() const { return static_cast<int>(L.rows()); }
   int j() const { return static_cast<int>(H.cols()); }
   int k() const { return static_cast<int>(E.rows()); }
+  int r() const { return static_cast<int>(G.cols()); }
   bool uncertain() const { return H.size() > 0 && E.size() > 0; }
 };
 
-// The fixed-gain full-order filter of docs/maths.md (5)–(6).
+// The two formulations of the full-order filter (docs/maths.md §2.2 and §18):
+//   Augmented  any (A_F, B_F, C_F); its error system (10) contains the plant state, so the
+//              plant must be robustly Schur stable (Theorem 1, §3);
+//   Observer   A_F = A − K C, B_F = K, C_F = L, G_F = G: the estimate x̂ of x itself, whose
+//              error e = x − x̂ obeys (122) and needs (A, C) detectable only.
+enum class FilterForm { Augmented, Observer };
+
+inline const char* to_string(FilterForm f) { return f == FilterForm::Observer ? "observer" : "augmented"; }
+
+// The fixed-gain full-order filter of docs/maths.md (5)–(6), with the known input (121):
+//   x_F(k+1) = A_F x_F(k) + B_F y(k) + G_F u(k),  z_F(k) = C_F x_F(k).
 struct Filter {
+  Filter() = default;
+  // An augmented-form filter without a known input.
+  Filter(Eigen::MatrixXd a_f, Eigen::MatrixXd b_f, Eigen::MatrixXd c_f)
+      : A_F(std::move(a_f)), B_F(std::move(b_f)), C_F(std::move(c_f)) {}
+
   Eigen::MatrixXd A_F;  // n×n
   Eigen::MatrixXd B_F;  // n×m
   Eigen::MatrixXd C_F;  // l×n
+  FilterForm form = FilterForm::Augmented;
+  Eigen::MatrixXd K;    // n×m observer gain (observer form only; equals B_F)
+  Eigen::MatrixXd G_F;  // n×r known-input matrix (empty or n×0 without a known input)
 };
 
 }  // namespace hinf

@@ -1,7 +1,7 @@
 // The synthesised robust H-infinity filter as a discrete LTI system, docs/maths.md (5)–(6):
 //
 //     z_F(k)   = C_F x_F(k)
-//     x_F(k+1) = A_F x_F(k) + B_F y(k)
+//     x_F(k+1) = A_F x_F(k) + B_F y(k)  [+ G_F u(k) with a known input, (121)]
 //
 // z_F(k) depends on y(0..k-1) only: the filter is a one-step predictor. step(y(k))
 // returns z_F(k) and then advances the state, in that order.
@@ -151,13 +151,23 @@ class LtiFilter {
 
   // Throws std::invalid_argument (message from validate_lti_gains) on invalid gains.
   LtiFilter(const Eigen::Ref<const Matrix>& A_F, const Eigen::Ref<const Matrix>& B_F,
-            const Eigen::Ref<const Matrix>& C_F) {
+            const Eigen::Ref<const Matrix>& C_F)
+      : LtiFilter(A_F, B_F, C_F, Matrix::Zero(A_F.rows(), 0)) {}
+
+  // With a known input u (docs/maths.md (121)): x_F(k+1) = A_F x_F(k) + B_F y(k) + G_F u(k);
+  // G_F is n x r (r = 0: none). Then step(y, u) must be used.
+  LtiFilter(const Eigen::Ref<const Matrix>& A_F, const Eigen::Ref<const Matrix>& B_F,
+            const Eigen::Ref<const Matrix>& C_F, const Eigen::Ref<const Matrix>& G_F) {
     LtiGainsValidation v = validate_lti_gains(A_F, B_F, C_F);
     if (!v.ok()) throw std::invalid_argument("hinf::runtime::LtiFilter: " + v.message);
+    if (G_F.rows() != A_F.rows() || !G_F.allFinite())
+      throw std::invalid_argument("hinf::runtime::LtiFilter: G_F must be n x r with finite entries, n = " +
+                                  std::to_string(A_F.rows()) + "; got " + detail::dims(G_F));
     spectral_radius_ = v.spectral_radius;
     A_F_ = A_F;
     B_F_ = B_F;
     C_F_ = C_F;
+    G_F_ = G_F;
     C_F_pinv_ = detail::pseudo_inverse(C_F_);
     x_F_ = Vector::Zero(n());
     x_next_ = Vector::Zero(n());
@@ -173,6 +183,7 @@ class LtiFilter {
   Eigen::Index n() const { return A_F_.rows(); }  // filter order
   Eigen::Index m() const { return B_F_.cols(); }  // measurement size
   Eigen::Index l() const { return C_F_.rows(); }  // estimated-signal size
+  Eigen::Index r() const { return G_F_.cols(); }  // known-input size (0: none)
 
   // x_F(0) = C_F^+ z0 (minimum-norm least-squares state reproducing the initial guess).
   void init(const Eigen::Ref<const Vector>& z0) {
@@ -188,14 +199,21 @@ class LtiFilter {
   // One step of docs/maths.md (5)–(6): returns z_F(k) = C_F x_F(k), then
   // x_F(k+1) = A_F x_F(k) + B_F y(k).
   // The returned reference stays valid until the next call. No heap allocation.
-  // Throws std::invalid_argument only if y has the wrong size.
+  // Throws std::invalid_argument only if y has the wrong size, or the filter has a known
+  // input (r() > 0: use step(y, u)).
   const Vector& step(const Eigen::Ref<const Vector>& y) {
-    check_size("y", y.size(), m());
-    z_F_.noalias() = C_F_ * x_F_;
-    x_next_.noalias() = A_F_ * x_F_;
-    x_next_.noalias() += B_F_ * y;
-    x_F_.swap(x_next_);
-    return z_F_;
+    if (r() > 0)
+      throw std::invalid_argument("hinf::runtime::LtiFilter: this filter has a known input (r = " +
+                                  std::to_string(r()) + "); call step(y, u)");
+    return advance(y);
+  }
+
+  // The same with the known input u(k) (size r()): x_F(k+1) = A_F x_F + B_F y + G_F u.
+  const Vector& step(const Eigen::Ref<const Vector>& y, const Eigen::Ref<const Vector>& u) {
+    check_size("u", u.size(), r());
+    const Vector& z = advance(y);
+    x_F_.noalias() += G_F_ * u;
+    return z;
   }
 
   // Current estimate z_F(k) = C_F x_F(k) without advancing (for the state after the last step).
@@ -208,17 +226,28 @@ class LtiFilter {
   const Matrix& A_F() const { return A_F_; }
   const Matrix& B_F() const { return B_F_; }
   const Matrix& C_F() const { return C_F_; }
+  const Matrix& G_F() const { return G_F_; }
   const Matrix& C_F_pinv() const { return C_F_pinv_; }
   double spectral_radius() const { return spectral_radius_; }  // of A_F, from construction
 
  private:
+  // z_F(k) = C_F x_F(k), then x_F(k+1) = A_F x_F(k) + B_F y(k).
+  const Vector& advance(const Eigen::Ref<const Vector>& y) {
+    check_size("y", y.size(), m());
+    z_F_.noalias() = C_F_ * x_F_;
+    x_next_.noalias() = A_F_ * x_F_;
+    x_next_.noalias() += B_F_ * y;
+    x_F_.swap(x_next_);
+    return z_F_;
+  }
+
   static void check_size(const char* what, Eigen::Index got, Eigen::Index want) {
     if (got != want)
       throw std::invalid_argument(std::string("hinf::runtime::LtiFilter: ") + what + " has size " +
                                   std::to_string(got) + ", expected " + std::to_string(want));
   }
 
-  Matrix A_F_, B_F_, C_F_, C_F_pinv_;
+  Matrix A_F_, B_F_, C_F_, G_F_, C_F_pinv_;
   Vector x_F_, x_next_, z_F_;
   double spectral_radius_ = 0.0;
 };

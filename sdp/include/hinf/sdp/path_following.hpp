@@ -37,6 +37,9 @@ struct Progress {
   int newton = 0;          // Newton iterations in this centring
   double lambda2 = 0;      // Newton decrement² at its end
   double elapsed_s = 0;
+  // true: one Newton iteration inside centring `centering` (newton = its index, lambda2
+  // its decrement²; objective and gap NaN); false: the centring has ended
+  bool newton_step = false;
 };
 using ProgressObserver = std::function<void(const Progress&)>;
 

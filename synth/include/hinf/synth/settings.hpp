@@ -1,10 +1,18 @@
-// Solver settings: a flat struct, one documented default per field, one validate().
+// Synthesis settings: a flat struct, one documented default per field, one validate().
+// Every field is set by the config's `solver:` section under its own name, but for `form`
+// (the config's `filter.form`).
 #pragma once
 #include <string>
 
 namespace hinf::synth {
 
+// Which filter to synthesise (docs/maths.md §18.4): Auto takes Theorem 1's augmented filter
+// when the plant is Schur stable and has no known input, the observer form otherwise.
+enum class FormChoice { Auto, Augmented, Observer };
+
 struct Settings {
+  // The filter's formulation (config `filter.form: auto | augmented | observer`).
+  FormChoice form = FormChoice::Auto;
   // Strictness margin of the LMI, relative to the equilibrated problem: the solver
   // enforces −M(x) ⪰ lmi_margin·I (docs/maths.md (26), [D2], [D3]). Refused below 1e-14
   // (solver tolerance).

@@ -39,8 +39,12 @@ struct Certificate {
   // the smallest γ at which the analysis LMI is feasible with that λ (≤ γ; +inf if
   // infeasible at γ) — an upper bound on the robust ℓ₂ gain. `analyze` minimises over λ too.
   double robust_bound = 0;
-  // conditioning of the recovery (docs/maths.md §6, [D6])
-  double cond_S = 0, cond_R_minus_S = 0;
+  // observer form only (docs/maths.md (121)): the realisation (A_F, B_F, C_F, G_F) is
+  // (A − K C, K, L, G) to rounding; the error system of checks 2–4 is built from K
+  double observer_mismatch = 0;           // certify::observer_form_mismatch (relative)
+  // conditioning of the recovery (docs/maths.md §6, [D6]): S and R − S of Theorem 1, or P
+  // of the observer-form LMI (124) (the others stay 0)
+  double cond_S = 0, cond_R_minus_S = 0, cond_P = 0;
   double norm_A_F = 0, norm_B_F = 0, norm_C_F = 0;
   bool passed = false;
 };
@@ -65,12 +69,27 @@ struct SolverInfo {
 };
 
 struct SynthesisResult {
-  Filter filter;
+  Filter filter;                  // filter.form says which formulation was solved
+  std::string bound;              // what γ bounds, in words (bound_statement)
   double gamma = 0;
   double gamma_squared = 0;
   Certificate certificate;
   SolverInfo solver;
 };
+
+// What γ bounds for a filter of this form on a plant with or without uncertainty: which
+// signal, from which inputs, for which uncertainty (docs/maths.md (13), (123)).
+std::string bound_statement(FilterForm form, bool uncertain);
+
+// The SDP `synthesize` would solve, known before it runs (for -v and the memory guard):
+// its form, the LMI's order N and variables, and the solver's memory model's estimate.
+struct ProblemSize {
+  FilterForm form = FilterForm::Augmented;
+  int lmi_order = 0;
+  int variables = 0;
+  double memory_mib = 0;  // sdp::estimated_peak_bytes, MiB
+};
+ProblemSize problem_size(const Plant& plant, const Settings& settings);
 
 // Full pipeline: pre-flight checks, solve, recovery, certification.
 // Throws Error(Infeasible) with the reason (e.g. spectral radius) or
@@ -99,6 +118,9 @@ Certificate certify_filter(const Plant& plant, const Filter& filter, double gamm
 // The Theorem-1 LMI in SDPA sparse format (min γ² s.t. docs/maths.md (18), H/E balanced, λ' = λs²),
 // for cross-checking γ* with any SDP solver.
 std::string theorem1_sdpa(const Plant& plant, const std::string& comment);
+// The LMI `solve` would minimise for this plant and settings.form (docs/maths.md §18.4):
+// Theorem 1's, or the observer-form LMI (124), in SDPA sparse format.
+std::string synthesis_sdpa(const Plant& plant, const Settings& settings, const std::string& comment);
 
 // Robust analysis (docs/maths.md (50) and §7.5: Lemma 1 with the S-procedure):
 // the smallest γ for which the analysis LMI is feasible for this filter.

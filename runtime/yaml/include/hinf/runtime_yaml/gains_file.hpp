@@ -10,6 +10,9 @@ namespace hinf::runtime_yaml {
 
 struct GainsFile {
   Eigen::MatrixXd A_F, B_F, C_F;      // docs/maths.md (5)-(6)
+  bool observer_form = false;         // filter.form: observer (absent or augmented: false)
+  Eigen::MatrixXd K;                  // filter.K, n×m (observer form only)
+  Eigen::MatrixXd G_F;                // filter.G_F, n×r known input (n×0 if absent)
   std::optional<double> gamma;        // certified bound, if the file has one
   std::string config_sha256;          // empty if absent
   std::string tool;                   // empty if absent

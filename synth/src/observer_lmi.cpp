@@ -1,0 +1,86 @@
+#include "observer_lmi.hpp"
+
+#include "hinf/common/error.hpp"
+#include "theorem1.hpp"
+
+namespace hinf::synth {
+
+using Eigen::MatrixXd;
+using hinf::Plant;
+
+namespace {
+ObserverLmi build(const Plant& P, const double* g_fixed) {
+  const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
+  const bool unc = P.uncertain();
+  std::vector<int> blocks{n, n, p, q, l};
+  if (unc) blocks.push_back(P.j());
+  ObserverLmi O;
+  O.lmi = lmi::LmiProblem(blocks);
+  auto& M = O.lmi;  // M(x), docs/maths.md (124)
+  O.P = M.add_symmetric("P", n);
+  O.Y = M.add_full("Y", n, m);
+  if (unc) O.lambda = M.add_scalar("lambda");
+  if (!g_fixed) O.g = M.add_scalar("gamma_squared");
+  else O.margin = M.add_scalar("margin");
+
+  const MatrixXd In = MatrixXd::Identity(n, n);
+  // row 1:  [ −P  PA − YC  PB  −YD  0  PH ]
+  M.add_term(0, 0, O.P, -In, In);
+  M.add_term(0, 1, O.P, In, P.A);
+  M.add_term(0, 1, O.Y, -In, P.C);
+  M.add_term(0, 2, O.P, In, P.B);
+  M.add_term(0, 3, O.Y, -In, P.D);
+  if (unc) M.add_term(0, 5, O.P, In, P.H);
+  // row 2:  [ ∗  −P + λEᵀE  0  0  Lᵀ  0 ]
+  M.add_term(1, 1, O.P, -In, In);
+  if (unc) M.add_scalar_term(1, 1, O.lambda, P.E.transpose() * P.E);
+  M.add_constant(1, 4, P.L.transpose());
+  // rows 3–6: −gI, −gI, −I, −λI
+  if (g_fixed) {
+    M.add_constant(2, 2, -*g_fixed * MatrixXd::Identity(p, p));
+    M.add_constant(3, 3, -*g_fixed * MatrixXd::Identity(q, q));
+    for (int b = 0; b < M.num_blocks(); ++b)
+      M.add_scalar_term(b, b, O.margin, -MatrixXd::Identity(M.block_size(b), M.block_size(b)));
+  } else {
+    M.add_scalar_term(2, 2, O.g, -MatrixXd::Identity(p, p));
+    M.add_scalar_term(3, 3, O.g, -MatrixXd::Identity(q, q));
+  }
+  M.add_constant(4, 4, -MatrixXd::Identity(l, l));
+  if (unc) M.add_scalar_term(5, 5, O.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  return O;
+}
+}  // namespace
+
+ObserverLmi build_observer_lmi(const Plant& P) { return build(P, nullptr); }
+
+ObserverLmi build_observer_lmi_backoff(const Plant& P, double g_fixed) { return build(P, &g_fixed); }
+
+std::vector<lmi::SparseEntry> observer_basis_error(const ObserverLmi& O, const Plant& plant) {
+  if (!plant.uncertain()) return {};
+  return rounded_EtE_basis_error(O.lmi, O.lambda, 1, plant);
+}
+
+certify::ObserverPoint observer_point(const ObserverLmi& O, const Plant& plant, const Eigen::VectorXd& x, double g) {
+  certify::ObserverPoint pt;
+  pt.P = O.lmi.value(O.P, x);
+  pt.Y = O.lmi.value(O.Y, x);
+  pt.lambda = plant.uncertain() ? x(O.lmi.variable(O.lambda).offset) : 0.0;
+  pt.g = g;
+  return pt;
+}
+
+hinf::Filter recover_observer(const certify::ObserverPoint& pt, const Plant& plant) {
+  const Eigen::LLT<MatrixXd> P(pt.P);
+  if (P.info() != Eigen::Success)
+    throw Error(ErrorCode::NumericalFailure, "recovery: P is not positive definite at the solution");
+  hinf::Filter f;
+  f.form = FilterForm::Observer;
+  f.K = P.solve(pt.Y);
+  f.A_F = plant.A - f.K * plant.C;
+  f.B_F = f.K;
+  f.C_F = plant.L;
+  f.G_F = plant.G.size() > 0 ? plant.G : MatrixXd::Zero(plant.n(), 0);
+  return f;
+}
+
+}  // namespace hinf::synth

@@ -1,0 +1,110 @@
+// The observer-form pipeline (docs/maths.md §18): pre-flight (detectability, (126)), the
+// LMI (124) by the barrier method, the optional γ back-off, recovery (125) and the
+// certificate of §7 on the error dynamics (122)–(123).
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include "hinf/certify/stability.hpp"
+#include "observer_lmi.hpp"
+#include "pipeline.hpp"
+
+namespace hinf::synth {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+// A mode counts as undetectable when the PBH matrix [A − λI; C] has a singular value this
+// small relative to ‖[A; C]‖ (docs/maths.md (126)).
+constexpr double kPbhRelativeTolerance = 1e-10;
+
+std::string complex_text(std::complex<double> z) {
+  if (z.imag() == 0) return fmt(z.real());
+  return fmt(z.real()) + (z.imag() >= 0 ? " + " : " - ") + fmt(std::abs(z.imag())) + "i";
+}
+
+std::string vector_text(const Eigen::VectorXcd& v) {
+  std::string s = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + complex_text(v(i));
+  return s + "]";
+}
+
+// The direction v (‖v‖ = 1, largest entry real and positive) of an undetectable mode λ
+// (|λ| ≥ 1, (A − λI)v ≈ 0, Cv ≈ 0), if any: the PBH test of (126) at each eigenvalue.
+void require_detectable(const Plant& plant) {
+  const int n = plant.n(), m = plant.m();
+  Eigen::ComplexEigenSolver<MatrixXd> es(plant.A, false);
+  MatrixXd AC(n + m, n);
+  AC << plant.A, plant.C;
+  const double scale = std::max(1.0, AC.norm());
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    const std::complex<double> lambda = es.eigenvalues()(i);
+    if (std::abs(lambda) < 1.0) continue;
+    Eigen::MatrixXcd pbh(n + m, n);
+    pbh << plant.A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n),
+        plant.C.cast<std::complex<double>>();
+    const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(pbh, Eigen::ComputeFullV);
+    const double sigma_min = svd.singularValues()(n - 1);
+    if (sigma_min > kPbhRelativeTolerance * scale) continue;
+    Eigen::VectorXcd v = svd.matrixV().col(n - 1);
+    Eigen::Index big = 0;
+    v.cwiseAbs().maxCoeff(&big);
+    v *= std::abs(v(big)) / v(big);
+    const Eigen::VectorXcd Av = plant.A.cast<std::complex<double>>() * v - lambda * v;
+    const Eigen::VectorXcd Cv = plant.C.cast<std::complex<double>>() * v;
+    throw Error(ErrorCode::Infeasible,
+                "infeasible: the mode λ = " + complex_text(lambda) + " of A (|λ| = " + fmt(std::abs(lambda)) +
+                    " ≥ 1) is not detectable from y: for the direction v = " + vector_text(v) +
+                    " (scaled state units), ‖(A − λI)v‖ = " + fmt(Av.norm()) + " and ‖C v‖ = " + fmt(Cv.norm()) +
+                    ", so e = x − x̂ keeps this mode for every gain K and no filter makes the error stable "
+                    "(docs/maths.md (126)); measure this mode, or leave it out of the model");
+  }
+}
+
+void preflight_observer(const Plant& plant) {
+  if (plant.L.isZero(0.0))
+    throw Error(ErrorCode::Infeasible,
+                "ill-posed: the estimated-output matrix L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
+  require_detectable(plant);
+  if (plant.B.isZero(0.0) && certify::spectral_radius(plant.A) < 1.0)
+    throw Error(ErrorCode::Infeasible,
+                "ill-posed: the process-noise matrix B is zero and A is Schur stable, so K = 0 makes the error decay "
+                "with no input at all: γ* = 0 (docs/maths.md §2.4); nothing to synthesise");
+}
+
+}  // namespace
+
+SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, const Settings& settings,
+                                    const IterationObserver& observer) {
+  preflight_observer(plant);
+  const ObserverLmi O = build_observer_lmi(plant);
+  const std::vector<lmi::SparseEntry> basis_error = observer_basis_error(O, plant);
+  const sdp::Solution sol =
+      solve_min_gamma(O.lmi, O.g, basis_error, settings, observer, "observer-form LMI",
+                      " (no gain K makes A + H F E − K C quadratically stable for every admissible F: reduce the "
+                      "uncertainty H, E)");
+  SynthesisResult res;
+  res.solver = solver_info(sol, O.lmi, sc, settings);
+  record_bracket(O.lmi, O.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);
+
+  certify::ObserverPoint pt;
+  if (settings.gamma_backoff > 0) {
+    const double gamma2_backoff = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
+    const ObserverLmi Ob = build_observer_lmi_backoff(plant, gamma2_backoff);
+    const sdp::Solution sb = solve_backoff(Ob.lmi, Ob.margin, gamma2_backoff, settings, observer);
+    res.solver.newton_iterations += sb.newton_total;
+    res.solver.time_s += sb.elapsed_s;
+    pt = observer_point(Ob, plant, sb.x, gamma2_backoff);
+  } else {
+    pt = observer_point(O, plant, sol.x, sol.objective);
+  }
+  res.filter = recover_observer(pt, plant);
+  certify_at_point(plant, certify::observer_lmi_matrix(plant, pt), pt.g, settings, res);
+  const VectorXd eig_P = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.P, Eigen::EigenvaluesOnly).eigenvalues();
+  res.certificate.cond_P = eig_P(eig_P.size() - 1) / eig_P(0);
+  return res;
+}
+
+}  // namespace hinf::synth

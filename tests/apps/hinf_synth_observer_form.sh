@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The observer form end to end (docs/maths.md §18), on the plants of tests/data/plants:
+#   hinf_synth_observer_form.sh EXE PLANTS_DIR
+# - the double integrator: solve exit 0, the gains file says form: observer and carries K,
+#   verify exit 0; with one entry of A_F changed, verify exit 1 (the realisation is no longer
+#   A − K C); codegen exit 0;
+# - the triple integrator with a known input: solve exit 0 with G_F in the gains file,
+#   verify exit 0; codegen exit 2 naming filter.G_F (its C has no u argument yet).
+set -u
+exe=$1 plants=$2
+work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-observer-XXXXXX")
+trap 'rm -rf "$work"' EXIT
+fail=0
+say() { echo "FAIL: $*"; fail=1; }
+run() {  # expected_rc name args...
+  local want=$1 name=$2
+  shift 2
+  "$exe" "$@" >"$work/$name.out" 2>"$work/$name.err"
+  local rc=$?
+  [ "$rc" -eq "$want" ] || { say "$name: exit $rc, expected $want"; cat "$work/$name.out" "$work/$name.err"; }
+}
+
+dint=$plants/double-integrator.yaml
+run 0 solve_dint solve "$dint" -o "$work/dint.yaml"
+grep -q "^  form: observer$" "$work/dint.yaml" || say "gains file does not say form: observer"
+grep -q "^  K:$" "$work/dint.yaml" || say "gains file has no filter.K"
+grep -q "^bound: .*(A - K C) e" "$work/dint.yaml" || say "gains file does not state what gamma bounds"
+grep -q "filter form: observer" "$work/solve_dint.out" || say "solve does not say which form it used"
+run 0 verify_dint verify "$dint" "$work/dint.yaml"
+grep -q "^verified" "$work/verify_dint.out" || say "verify did not verify"
+# change the first entry of A_F's first row: no longer A − K C
+python3 - "$work/dint.yaml" "$work/tampered.yaml" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+i = text.index("  A_F:\n")
+j = text.index("[", i) + 1
+k = text.index(",", j)
+open(sys.argv[2], "w").write(text[:j] + repr(float(text[j:k]) + 1e-3) + text[k:])
+PY
+run 1 verify_tampered verify "$dint" "$work/tampered.yaml"
+grep -q "NOT A - K C" "$work/verify_tampered.out" || say "verify does not name the broken realisation"
+mkdir "$work/c"
+run 0 codegen_dint codegen "$work/dint.yaml" --out "$work/c" --prefix dint
+
+tint=$plants/triple-integrator-known-input.yaml
+run 0 solve_tint solve "$tint" -o "$work/tint.yaml"
+grep -q "^  G_F:$" "$work/tint.yaml" || say "gains file has no filter.G_F"
+grep -q "r: 1" "$work/tint.yaml" || say "gains file dimensions lack r"
+run 0 verify_tint verify "$tint" "$work/tint.yaml"
+mkdir "$work/c2"
+run 2 codegen_tint codegen "$work/tint.yaml" --out "$work/c2" --prefix tint
+grep -q "filter.G_F" "$work/codegen_tint.err" || say "codegen does not name filter.G_F"
+[ -z "$(ls -A "$work/c2")" ] || say "codegen left files after refusing"
+exit $fail

@@ -1,0 +1,267 @@
+// The observer-form filter (docs/maths.md §18): detectable plants (integrators), known
+// inputs, the LMI (124) against the closed form (127) for scalar plants and against the
+// Riccati predictor of §8.1 (an independent computation of the same optimum), the
+// pre-flight's undetectable mode (126), invariance under state coordinates, and the runtime
+// flying the known input.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "hinf/certify/error_system.hpp"
+#include "hinf/certify/riccati_filter.hpp"
+#include "hinf/common/error.hpp"
+#include "hinf/runtime/lti_filter.hpp"
+#include "hinf/synth/hill_plant.hpp"
+#include "hinf/synth/synthesis.hpp"
+#include "random_plants.hpp"
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using hinf::FilterForm;
+using hinf::Plant;
+using hinf::synth::FormChoice;
+using hinf::synth::Settings;
+
+Plant certain_plant(MatrixXd A, MatrixXd B, MatrixXd C, MatrixXd D, MatrixXd L) {
+  Plant P;
+  P.A = std::move(A);
+  P.B = std::move(B);
+  P.C = std::move(C);
+  P.D = std::move(D);
+  P.L = std::move(L);
+  P.H = MatrixXd(P.A.rows(), 0);
+  P.E = MatrixXd(0, P.A.rows());
+  P.G = MatrixXd(P.A.rows(), 0);
+  return P;
+}
+
+Plant scalar(double a, double b, double c, double d, double l) {
+  return certain_plant(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b), MatrixXd::Constant(1, 1, c),
+                       MatrixXd::Constant(1, 1, d), MatrixXd::Constant(1, 1, l));
+}
+
+// docs/maths.md (127): γ(κ) for the gain κ = k c of a scalar plant.
+double scalar_gamma(double a, double b, double c, double d, double l, double kappa) {
+  const double rho2 = (d / c) * (d / c);
+  return std::abs(l) * std::sqrt(b * b + kappa * kappa * rho2) / (1 - std::abs(a - kappa));
+}
+
+// The closed-form optimum of (127): the branch minimisers κ₁, κ₂ or the dead-beat κ = a.
+double scalar_optimum(double a, double b, double c, double d, double l) {
+  const double rho2 = (d / c) * (d / c);
+  if (a < 1) {
+    const double k1 = b * b / (rho2 * (1 - a));
+    if (k1 <= a) return scalar_gamma(a, b, c, d, l, k1);
+  }
+  if (a > -1) {
+    const double k2 = -b * b / (rho2 * (1 + a));
+    if (k2 >= a) return scalar_gamma(a, b, c, d, l, k2);
+  }
+  return scalar_gamma(a, b, c, d, l, a);
+}
+
+Settings observer_settings() {
+  Settings s;
+  s.form = FormChoice::Observer;
+  return s;
+}
+
+TEST(ObserverForm, ScalarClosedFormIsItsOwnMinimum) {
+  // (127) minimised by a dense scan, independently of the branch analysis
+  const double cases[][5] = {{1, 1, 1, 1, 1},     {1.2, 0.3, 2, 0.5, 1}, {0.5, 1, 1, 0.2, 2},
+                             {-0.7, 1, 1, 1, 1},  {0.3, 0.1, -1, 1, 1},  {-1.5, 1, 1, 0.1, 1}};
+  for (const auto& k : cases) {
+    double best = INFINITY;
+    for (int i = 1; i < 2000000; ++i) {
+      const double kappa = k[0] - 1 + 2.0 * i / 2000000;
+      best = std::min(best, scalar_gamma(k[0], k[1], k[2], k[3], k[4], kappa));
+    }
+    EXPECT_NEAR(scalar_optimum(k[0], k[1], k[2], k[3], k[4]) / best, 1.0, 1e-9) << "a = " << k[0];
+  }
+}
+
+TEST(ObserverForm, ScalarPlantsMatchTheClosedFormByLmiAndRiccati) {
+  const double cases[][5] = {{1, 1, 1, 1, 1},     {1.2, 0.3, 2, 0.5, 1}, {0.5, 1, 1, 0.2, 2},
+                             {-0.7, 1, 1, 1, 1},  {0.3, 0.1, -1, 1, 1},  {-1.5, 1, 1, 0.1, 1},
+                             {1, 0.05, 1, 0.1, 1}};
+  for (const auto& k : cases) {
+    SCOPED_TRACE(testing::Message() << "a=" << k[0] << " b=" << k[1] << " c=" << k[2] << " d=" << k[3]);
+    const Plant P = scalar(k[0], k[1], k[2], k[3], k[4]);
+    const double closed = scalar_optimum(k[0], k[1], k[2], k[3], k[4]);
+    const double riccati = hinf::certify::optimal_hinf_predictor_gamma(P, 1e-10);
+    const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, observer_settings());
+    std::printf("  closed form %.12g  Riccati %.12g  LMI %.12g\n", closed, riccati, res.gamma);
+    EXPECT_NEAR(riccati / closed, 1.0, 1e-8);
+    EXPECT_NEAR(res.gamma / closed, 1.0, 1e-6);
+    EXPECT_GE(res.gamma, closed * (1 - 1e-9));  // certified: never below the optimum
+    EXPECT_EQ(res.filter.form, FilterForm::Observer);
+    EXPECT_TRUE(res.certificate.passed);
+  }
+}
+
+Plant double_integrator(double T, double sigma) {
+  MatrixXd A(2, 2), B(2, 1), C(1, 2);
+  A << 1, T, 0, 1;
+  B << T * T / 2, T;
+  C << 1, 0;
+  return certain_plant(A, B, C, MatrixXd::Constant(1, 1, sigma), MatrixXd::Identity(2, 2));
+}
+
+// The observer-form LMI and the Riccati route agree on γ to 1e-6, and the filter is
+// (A − KC, K, L): the recovered realisation is exactly the observer's.
+void expect_lmi_equals_riccati(const Plant& P, const char* what) {
+  SCOPED_TRACE(what);
+  const double riccati = hinf::certify::optimal_hinf_predictor_gamma(P, 1e-10);
+  const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, Settings{});  // auto
+  std::printf("  %s: LMI γ = %.12g, Riccati γ = %.12g, rel diff %.2e\n", what, res.gamma, riccati,
+              (res.gamma - riccati) / riccati);
+  EXPECT_EQ(res.filter.form, FilterForm::Observer);  // auto picks it: A is not Schur stable
+  EXPECT_NEAR(res.gamma / riccati, 1.0, 1e-6);
+  EXPECT_TRUE(res.certificate.passed);
+  EXPECT_LE(hinf::certify::observer_form_mismatch(P, res.filter), 1e-14);
+  EXPECT_LT(res.certificate.spectral_radius_nominal, 1.0);
+  EXPECT_LE(res.certificate.hinf_norm_nominal, res.gamma);
+}
+
+TEST(ObserverForm, DoubleIntegratorMatchesRiccati) { expect_lmi_equals_riccati(double_integrator(0.1, 0.5), "double integrator"); }
+
+Plant triple_integrator_with_input() {
+  const double T = 0.05;
+  MatrixXd A(3, 3), B(3, 1), C(1, 3), G(3, 1);
+  A << 1, T, T * T / 2, 0, 1, T, 0, 0, 1;
+  B << T * T * T / 6, T * T / 2, T;
+  G << T * T / 2, T, 0;  // a commanded acceleration enters velocity and position
+  C << 1, 0, 0;
+  Plant P = certain_plant(A, B, C, MatrixXd::Constant(1, 1, 0.2), MatrixXd::Identity(3, 3));
+  P.G = G;
+  return P;
+}
+
+TEST(ObserverForm, TripleIntegratorWithKnownInputMatchesRiccati) {
+  expect_lmi_equals_riccati(triple_integrator_with_input(), "triple integrator with a known input");
+}
+
+// The known input cancels from the error (122): the runtime filter fed u tracks the plant
+// driven by u exactly as it tracks the plant without u (same noise, same gain).
+TEST(ObserverForm, KnownInputCancelsInTheRuntimeFilter) {
+  const Plant P = triple_integrator_with_input();
+  const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, Settings{});
+  ASSERT_EQ(res.filter.G_F.cols(), 1);
+  hinf::runtime::LtiFilter with_u(res.filter.A_F, res.filter.B_F, res.filter.C_F, res.filter.G_F);
+  hinf::runtime::LtiFilter without_u(res.filter.A_F, res.filter.B_F, res.filter.C_F, res.filter.G_F);
+  std::mt19937 g(7);
+  std::normal_distribution<double> N01;
+  VectorXd x_u = VectorXd::Zero(3), x_0 = VectorXd::Zero(3);
+  double worst = 0, scale = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const VectorXd u = VectorXd::Constant(1, 3.0 * std::sin(0.01 * k));  // up to 3 m/s²
+    const VectorXd w = VectorXd::Constant(1, N01(g)), v = VectorXd::Constant(1, N01(g));
+    const VectorXd e_u = x_u - with_u.step(P.C * x_u + P.D * v, u);
+    const VectorXd e_0 = x_0 - without_u.step(P.C * x_0 + P.D * v, VectorXd::Zero(1));
+    worst = std::max(worst, (e_u - e_0).norm());
+    scale = std::max(scale, x_u.norm());
+    x_u = P.A * x_u + P.G * u + P.B * w;
+    x_0 = P.A * x_0 + P.B * w;
+  }
+  std::printf("  |x| up to %.3g, error difference with and without u at most %.3g\n", scale, worst);
+  EXPECT_GT(scale, 1e3);                 // the input moved the plant far
+  EXPECT_LT(worst, 1e-9 * scale);        // and the error did not notice it
+  EXPECT_THROW(with_u.step(VectorXd::Zero(1)), std::invalid_argument);  // u cannot be forgotten
+}
+
+hinf::synth::HillPlantSpec uncontrolled_hill(double delta_bar) {
+  hinf::synth::HillPlantSpec s;
+  s.orbital_rate = 7.2722e-5;
+  s.chaser_mass = 1000;
+  s.sample_time = 0.1;
+  s.delta_bar = delta_bar;
+  VectorXd b(6);
+  b << 0.05, 0.05, 0.05, 0.001, 0.001, 0.001;
+  s.B = b.asDiagonal();
+  s.D = 0.1 * MatrixXd::Identity(3, 3);
+  return s;
+}
+
+TEST(ObserverForm, UncontrolledHillPlantUndiscounted) {
+  Plant nominal = hinf::synth::build_hill_plant(uncontrolled_hill(0));
+  nominal.G = MatrixXd(6, 0);
+  expect_lmi_equals_riccati(nominal, "uncontrolled Hill, nominal");
+  // with the orbital-rate uncertainty acting on the error dynamics (123)
+  Plant robust = hinf::synth::build_hill_plant(uncontrolled_hill(0.05));
+  robust.G = MatrixXd(6, 0);
+  const hinf::synth::SynthesisResult res = hinf::synth::synthesize(robust, Settings{});
+  EXPECT_EQ(res.filter.form, FilterForm::Observer);
+  EXPECT_TRUE(res.certificate.passed);
+  EXPECT_TRUE(res.certificate.robust_feasible_at_gamma);
+  EXPECT_LT(res.certificate.spectral_radius_sampled_max, 1.0);
+  EXPECT_NE(res.bound.find("error dynamics"), std::string::npos) << res.bound;
+}
+
+TEST(ObserverForm, UndetectableModeIsNamed) {
+  MatrixXd A(2, 2), C(1, 2);
+  A << 1.1, 0, 0, 0.5;
+  C << 0, 1;  // the unstable mode is not measured
+  const Plant P = certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2));
+  try {
+    hinf::synth::synthesize(P, Settings{});
+    FAIL() << "no exception";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
+    const std::string m = e.what();
+    EXPECT_NE(m.find("λ = 1.1"), std::string::npos) << m;
+    EXPECT_NE(m.find("not detectable"), std::string::npos) << m;
+    EXPECT_NE(m.find("v = [1, 0]"), std::string::npos) << m;
+  }
+}
+
+TEST(ObserverForm, AugmentedFormOnAnIntegratorSaysWhyAndPointsToTheObserverForm) {
+  Settings s;
+  s.form = FormChoice::Augmented;
+  try {
+    hinf::synth::synthesize(double_integrator(0.1, 0.5), s);
+    FAIL() << "no exception";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
+    EXPECT_NE(std::string(e.what()).find("observer"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ObserverForm, StablePlantsStillGetTheAugmentedFilterByDefault) {
+  const Plant P = scalar(0.5, 1, 1, 0.2, 2);
+  EXPECT_EQ(hinf::synth::synthesize(P, Settings{}).filter.form, FilterForm::Augmented);
+  // and both forms reach the same nominal optimum (the central filter is an observer)
+  EXPECT_NEAR(hinf::synth::synthesize(P, Settings{}).gamma / hinf::synth::synthesize(P, observer_settings()).gamma,
+              1.0, 1e-6);
+}
+
+// Invariance (docs/maths.md §4.4): x' = S x of an unstable, detectable random plant gives
+// the same γ and the same filter transfer function.
+TEST(ObserverForm, SimilarityTwinsOfUnstablePlantsGiveTheSameGamma) {
+  std::mt19937 g(2026);
+  for (int trial = 0; trial < 3; ++trial) {
+    const int n = 4;
+    Plant P = certain_plant(hinf::test::random_matrix(g, n, n), hinf::test::random_matrix(g, n, 2),
+                            hinf::test::random_matrix(g, 2, n), hinf::test::random_matrix(g, 2, 2),
+                            hinf::test::random_matrix(g, 2, n));
+    P.A *= 1.3 / P.A.operatorNorm();  // spectral radius up to 1.3: typically unstable
+    const MatrixXd S = hinf::test::random_matrix(g, n, n) + 3 * MatrixXd::Identity(n, n);
+    const MatrixXd Si = S.inverse();
+    Plant Q = P;
+    Q.A = S * P.A * Si;
+    Q.B = S * P.B;
+    Q.C = P.C * Si;
+    Q.L = P.L * Si;
+    const double gP = hinf::synth::synthesize(P, observer_settings()).gamma;
+    const double gQ = hinf::synth::synthesize(Q, observer_settings()).gamma;
+    std::printf("  trial %d: γ = %.10g, twin %.10g\n", trial, gP, gQ);
+    EXPECT_NEAR(gQ / gP, 1.0, 1e-6) << "trial " << trial;
+  }
+}
+
+}  // namespace
