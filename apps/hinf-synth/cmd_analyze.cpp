@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
@@ -17,15 +18,21 @@ using Json = nlohmann::ordered_json;  // keys in the order written
 // A number as the text output prints it (num: 10 significant digits); null if not finite.
 Json json_num(double v) { return std::isfinite(v) ? Json(std::strtod(num(v).c_str(), nullptr)) : Json(nullptr); }
 
+// θ rad/sample at sample time T is θ/(2πT) Hz.
+constexpr double kPi = 3.14159265358979323846;
+double peak_hz(const synth::FilterAnalysis& a, double T) { return a.hinf_norm_peak_frequency / (2 * kPi * T); }
+
 // One line of JSON: the gains path and the analysis (keys in this order).
 std::string analysis_json(const std::string& gains_path, const runtime_yaml::GainsFile& g,
-                          const synth::FilterAnalysis& a) {
+                          const synth::FilterAnalysis& a, std::optional<double> sample_time) {
   Json j = Json::object();
   j["gains"] = gains_path;
   j["claimed_gamma"] = g.gamma ? json_num(*g.gamma) : Json(nullptr);
   j["spectral_radius_nominal"] = json_num(a.spectral_radius_nominal);
   j["hinf_norm_nominal"] = json_num(a.hinf_norm_nominal);
   j["hinf_norm_peak_frequency"] = json_num(a.hinf_norm_peak_frequency);
+  j["sample_time_s"] = sample_time ? json_num(*sample_time) : Json(nullptr);
+  j["hinf_norm_peak_frequency_hz"] = sample_time ? json_num(peak_hz(a, *sample_time)) : Json(nullptr);
   j["spectral_radius_sampled_max"] = json_num(a.spectral_radius_sampled_max);
   j["robust_bound"] = json_num(a.robust_bound);
   if (!a.delta_grid.empty()) {
@@ -62,12 +69,14 @@ void add_analyze(CLI::App& app, Action& action) {
       const runtime_yaml::GainsFile& g = in.gains;
       const synth::FilterAnalysis a = synth::analyze_filter(cfg.plant, cfg.hill, in.filter, cfg.settings, *points);
       if (*json) {
-        std::cout << analysis_json(args->gains, g, a) << "\n";
+        std::cout << analysis_json(args->gains, g, a, cfg.sample_time()) << "\n";
         return 0;
       }
       std::cout << "gains                      " << args->gains << (g.gamma ? " (claims gamma " + num(*g.gamma) + ")" : "") << "\n"
                 << "spectral radius (nominal)  " << num(a.spectral_radius_nominal) << "\n"
-                << "nominal Hinf norm          " << num(a.hinf_norm_nominal) << " at " << num(a.hinf_norm_peak_frequency) << " rad/sample\n"
+                << "nominal Hinf norm          " << num(a.hinf_norm_nominal) << " at " << num(a.hinf_norm_peak_frequency) << " rad/sample"
+                << (cfg.sample_time() ? " = " + num(peak_hz(a, *cfg.sample_time())) + " Hz (T = " + num(*cfg.sample_time()) + " s)" : "")
+                << "\n"
                 << "sampled spectral radius    " << num(a.spectral_radius_sampled_max) << " (max over admissible F)\n"
                 << "robust bound (LMI)         " << num(a.robust_bound) << "\n";
       if (!a.delta_grid.empty())

@@ -41,7 +41,7 @@ void add_solve(CLI::App& app, Action& action) {
         else
           std::fprintf(stderr, "optimality gap not certified: %s\n", r.solver.gap_detail.c_str());
       }
-      hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256}), {*config});
+      hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256, cfg.sample_time()}), {*config});
       std::cout << "gamma = " << num(r.gamma) << " (nominal Hinf norm " << num(r.certificate.hinf_norm_nominal)
                 << ", robust bound " << num(r.certificate.robust_bound) << "), certified; gains written to "
                 << *output << " [" << r.solver.newton_iterations << " Newton iterations, "

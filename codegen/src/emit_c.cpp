@@ -101,6 +101,10 @@ std::string provenance(const std::string& file, const std::string& what,
   os << "\n * Config sha256: " << (g.config_sha256.empty() ? "not recorded" : g.config_sha256)
      << "\n * Gamma (certified l2-gain bound): "
      << (g.gamma ? literal(*g.gamma, Real::Double) : std::string("not recorded"))
+     << "\n * Sample time: "
+     << (g.sample_time ? literal(*g.sample_time, Real::Double) + " s: call the step function once per sample"
+                       : std::string("not recorded (the gains file does not state it)"))
+     << "\n * Form: " << (g.observer_form ? "observer (A_F = A - K C, B_F = K, C_F = L)" : "augmented")
      << "\n * Real type: " << type_name(o.real) << "\n */\n";
   return os.str();
 }

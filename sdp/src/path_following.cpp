@@ -211,7 +211,11 @@ CenteringResult PathFollower::centre(LogDetBarrier& b, const VectorXd& z, Phase 
                                      const CenteringOptions& co) {
   if (phase == Phase::Minimise && s_.engine == Engine::QrNewton) return damped_newton_centre(b, z, co);
   CenteringResult r = ipopt_.run(b, z, co);
-  if (phase != Phase::Minimise || !(r.inexact || r.stalled || !r.centred)) return r;
+  // Phase II: also when Ipopt's steps have stopped being Newton steps or it stalled. Phase
+  // I: only when Ipopt failed outright (a thin feasible set near the boundary of
+  // feasibility, where the explicit Hessian's round-off stops it early).
+  const bool failed = !r.centred && !r.stopped_early;
+  if (phase == Phase::Minimise ? !(r.inexact || r.stalled || failed) : !failed) return r;
   CenteringOptions cq = co;
   cq.max_iterations = std::max(1, co.max_iterations - r.iterations);
   const CenteringResult q = damped_newton_centre(b, b.inside(r.z) ? r.z : z, cq);

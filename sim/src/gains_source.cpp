@@ -28,7 +28,7 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
   out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F};
   out.gamma = r.gamma;
   // The synthesis library's own writer: the same file `hinf-synth solve -o` writes.
-  out.gains_yaml = hinf::synth::format_gains_yaml(r, {source.synthesize_path, config.sha256});
+  out.gains_yaml = hinf::synth::format_gains_yaml(r, {source.synthesize_path, config.sha256, config.sample_time()});
   out.origin = "synthesised from " + source.synthesize_path;
   return out;
 }

@@ -112,6 +112,7 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   kv(out, "l", static_cast<int>(r.filter.C_F.rows()));
   if (r.filter.G_F.cols() > 0) kv(out, "r", static_cast<int>(r.filter.G_F.cols()));
   out << YAML::EndMap;
+  if (pv.sample_time) kv(out, "sample_time", *pv.sample_time);  // s: call the filter at this period
   kv(out, "gamma", r.gamma);
   kv(out, "gamma_squared", r.gamma_squared);
   if (!r.bound.empty()) kv(out, "bound", r.bound);

@@ -29,13 +29,17 @@ assert text.endswith("\n") and text.count("\n") == 1, "not one line"
 d = json.loads(text, parse_constant=refuse)
 assert d["gains"] == path, "gains %r != %r" % (d["gains"], path)
 want = ["gains", "claimed_gamma", "spectral_radius_nominal", "hinf_norm_nominal",
-        "hinf_norm_peak_frequency", "spectral_radius_sampled_max", "robust_bound",
-        "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
+        "hinf_norm_peak_frequency", "sample_time_s", "hinf_norm_peak_frequency_hz",
+        "spectral_radius_sampled_max", "robust_bound", "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
 assert list(d) == want, list(d)
+# the hill config states T = 0.1 s: the peak in Hz is θ/(2πT)
+import math
+assert d["sample_time_s"] == 0.1, d["sample_time_s"]
+assert abs(d["hinf_norm_peak_frequency_hz"] - d["hinf_norm_peak_frequency"] / (2 * math.pi * 0.1)) <= 1e-9 * 5, d
 assert len(d["delta_grid"]) == 3, d["delta_grid"]
 for p in d["delta_grid"]:
     assert list(p) == ["delta", "spectral_radius", "hinf_norm"], list(p)
-for k in want[2:9]:
+for k in want[2:11]:
     assert isinstance(d[k], (int, float)), k
 print("ok: gains = %r" % d["gains"])
 PY

@@ -25,7 +25,8 @@ const std::vector<std::string>& allowed_top_level_keys() {
   static const std::vector<std::string> keys{"format",        "tool",   "config_sha256",
                                              "dimensions",    "gamma",  "gamma_squared",
                                              "filter",        "certificate", "solver",
-                                             "timing",        "bound"};
+                                             "timing",        "bound",
+                                             "sample_time"};
   return keys;
 }
 
@@ -50,6 +51,7 @@ void read_header(const YamlMap& top, GainsFile& g) {
   if (top.has("config_sha256") && !is_hex64(g.config_sha256))
     top.fail("config_sha256", "expected 64 hexadecimal digits, got '" + g.config_sha256 + "'");
   if (top.has("gamma")) g.gamma = top.positive("gamma");
+  if (top.has("sample_time")) g.sample_time = top.positive("sample_time");
   if (top.has("gamma_squared")) top.positive("gamma_squared");
 }
 

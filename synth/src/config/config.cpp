@@ -53,6 +53,12 @@ std::string solver_key(const std::string& field) { return "solver." + field; }
 
 }  // namespace
 
+std::optional<double> SynthConfig::sample_time() const {
+  if (sampling) return sampling->sample_time;
+  if (hill) return hill->sample_time;
+  return std::nullopt;
+}
+
 SynthConfig parse_config(const std::string& yaml_text, const std::string& source_name) {
   SynthConfig config;
   config.path = source_name;
@@ -76,8 +82,10 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   try {
     if (system) {
-      config.plant = read_system_section(reader, system, uncertainty);
+      config.plant = read_system_section(reader, system, uncertainty, config.sampling);
       located(reader, root, system_key, [&] { validate_plant(config.plant); });
+      if (config.sampling)
+        located(reader, root, system_key, [&] { config.plant = sample_plant(config.plant, *config.sampling); });
     } else {
       HillPlantSpec model = read_hill_section(reader, hill);
       located(reader, root, hill_key, [&] { config.plant = build_hill_plant(model); });

@@ -5,14 +5,18 @@
 #include "hinf/common/yaml_reader.hpp"
 #include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/validate_plant.hpp"
+#include "hinf/synth/sampled_plant.hpp"
 #include "hinf/synth/settings.hpp"
+#include <optional>
 
 namespace hinf::synth {
 
 // `system:` (A, B, C, D, L, optional G) and the optional `uncertainty:` (H, E); `uncertainty` may be
 // an undefined node. Entries are checked here; shapes by validate_plant (the caller).
+// With `sample_time` the matrices are continuous-time and `sampling` is set (the caller
+// samples them after validate_plant, docs/maths.md §19).
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
-                          const YAML::Node& uncertainty);
+                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling);
 
 // `hill:`; values and shapes are checked by validate_hill_model (the caller).
 HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill);

@@ -14,11 +14,33 @@ Eigen::MatrixXd required_matrix(const YamlReader& reader, const YAML::Node& sect
   return reader.matrix(node, path);
 }
 
+// sample_time, discretisation, process_noise: the plant is continuous-time (docs/maths.md §19).
+std::optional<SamplingSpec> read_sampling(const YamlReader& reader, const YAML::Node& system) {
+  const YamlMap sys(reader, system, "system");
+  if (!sys.has("sample_time")) {
+    for (const char* key : {"discretisation", "process_noise"})
+      if (sys.has(key))
+        sys.fail(key, "only with system.sample_time (the matrices are then continuous-time); without it they "
+                      "are the discrete plant");
+    return std::nullopt;
+  }
+  SamplingSpec spec;
+  spec.sample_time = sys.positive("sample_time");
+  const std::string method = sys.choice("discretisation", {"zoh", "tustin", "euler"}, "zoh");
+  spec.method = method == "euler"    ? models::Discretisation::Euler
+                : method == "tustin" ? models::Discretisation::Tustin
+                                     : models::Discretisation::ZeroOrderHold;
+  spec.white_process_noise = sys.choice("process_noise", {"held", "white"}, "held") == "white";
+  return spec;
+}
+
 }  // namespace
 
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
-                          const YAML::Node& uncertainty) {
-  reader.check_map(system, "system", {"A", "B", "C", "D", "L", "G"});
+                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling) {
+  reader.check_map(system, "system",
+                   {"A", "B", "C", "D", "L", "G", "sample_time", "discretisation", "process_noise"});
+  sampling = read_sampling(reader, system);
   Plant plant;
   plant.A = required_matrix(reader, system, "system", "A", "n x n state matrix");
   plant.B = required_matrix(reader, system, "system", "B", "n x p process-noise input");

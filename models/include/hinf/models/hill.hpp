@@ -26,15 +26,14 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <unsupported/Eigen/MatrixFunctions>
+
+#include "hinf/models/discretise.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace hinf::models {
-
-enum class Discretisation { Euler, ZeroOrderHold };
 
 namespace hill {
 
@@ -94,20 +93,13 @@ struct Discrete {
   Matrix6 Gamma;
 };
 
+// The generic sampling of discretise.hpp (Euler and ZOH as above; Tustin is not offered
+// for the Hill model).
 inline Discrete discretise(const Matrix6& A_c, const Matrix63& G_0, double T, Discretisation d) {
+  const SampledMatrices s = models::discretise(A_c, T, d);
   Discrete out;
-  if (d == Discretisation::Euler) {
-    out.A = Matrix6::Identity() + T * A_c;
-    out.G = T * G_0;
-    out.Gamma = T * Matrix6::Identity();
-    return out;
-  }
-  Eigen::Matrix<double, 12, 12> M = Eigen::Matrix<double, 12, 12>::Zero();
-  M.topLeftCorner<6, 6>() = A_c;
-  M.topRightCorner<6, 6>().setIdentity();
-  const Eigen::Matrix<double, 12, 12> expM = (T * M).exp();
-  out.A = expM.topLeftCorner<6, 6>();
-  out.Gamma = expM.topRightCorner<6, 6>();
+  out.A = s.A;
+  out.Gamma = s.Gamma;
   out.G = out.Gamma * G_0;
   return out;
 }

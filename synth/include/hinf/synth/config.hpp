@@ -11,16 +11,21 @@
 
 #include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/validate_plant.hpp"
+#include "hinf/synth/sampled_plant.hpp"
 #include "hinf/synth/settings.hpp"
 
 namespace hinf::synth {
 
 struct SynthConfig {
-  Plant plant;                     // validated (validate_plant)
+  Plant plant;                     // validated (validate_plant); discrete (sampled if given in continuous time)
+  std::optional<SamplingSpec> sampling;  // set iff `system:` was continuous-time (sample_time)
   std::optional<HillPlantSpec> hill;   // set iff the config used `hill:`
   Settings settings;               // defaults overridden by `solver:`; validated
   std::string sha256;              // SHA-256 of the config's exact bytes, lowercase hex
   std::string path;                // the path (or source name) it was read from
+  // The sample time the filter must be run at, if the config states it (system.sample_time
+  // or hill.sample_time), s.
+  std::optional<double> sample_time() const;
 };
 
 // Reads the file's bytes, hashes them and parses them.

@@ -14,6 +14,7 @@ struct GainsFile {
   Eigen::MatrixXd K;                  // filter.K, n×m (observer form only)
   Eigen::MatrixXd G_F;                // filter.G_F, n×r known input (n×0 if absent)
   std::optional<double> gamma;        // certified bound, if the file has one
+  std::optional<double> sample_time;  // s, the period the filter must be called at, if stated
   std::string config_sha256;          // empty if absent
   std::string tool;                   // empty if absent
 };

@@ -1,0 +1,64 @@
+// Sampling a continuous-time linear plant ẋ = A_c x + (inputs) with sample time T
+// (docs/maths.md §19). Every method gives the discrete state matrix A and the matrix Γ that
+// maps an input held over the sample into the state: B = Γ B_c, G = Γ G_c, H = Γ H_c.
+//   Euler:          A = I + T A_c,                          Γ = T I
+//   ZeroOrderHold:  exp(T [A_c, I; 0, 0]) = [A, Γ; 0, I],   Γ = ∫₀ᵀ e^{A_c s} ds
+//   Tustin:         A = (I − T A_c/2)⁻¹ (I + T A_c/2),      Γ = T (I − T A_c/2)⁻¹
+// (the trapezoidal rule for the state, the input held: x(k+1) = x + (T/2) A_c (x + x(k+1)) + T B u).
+// And the sampled covariance of white noise of intensity B_c B_cᵀ (Van Loan 1978):
+//   exp(T [−A_c, B_c B_cᵀ; 0, A_cᵀ]) = [·, M₁₂; 0, M₂₂],   Q = M₂₂ᵀ M₁₂ = ∫₀ᵀ e^{A_c s} B_c B_cᵀ e^{A_cᵀ s} ds.
+// Needs Eigen only.
+#pragma once
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace hinf::models {
+
+enum class Discretisation { Euler, ZeroOrderHold, Tustin };
+
+inline const char* to_string(Discretisation d) {
+  return d == Discretisation::Euler ? "euler" : d == Discretisation::Tustin ? "tustin" : "zoh";
+}
+
+struct SampledMatrices {
+  Eigen::MatrixXd A;      // discrete state matrix
+  Eigen::MatrixXd Gamma;  // held input → state
+};
+
+// A_c square, T > 0 and finite (the caller checks; non-finite results are the caller's to name).
+inline SampledMatrices discretise(const Eigen::MatrixXd& A_c, double T, Discretisation d) {
+  const Eigen::Index n = A_c.rows();
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+  SampledMatrices out;
+  if (d == Discretisation::Euler) {
+    out.A = I + T * A_c;
+    out.Gamma = T * I;
+  } else if (d == Discretisation::Tustin) {
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(I - (T / 2) * A_c);
+    out.A = lu.solve(I + (T / 2) * A_c);
+    out.Gamma = lu.solve(T * I);
+  } else {
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    M.topLeftCorner(n, n) = A_c;
+    M.topRightCorner(n, n) = I;
+    const Eigen::MatrixXd expM = (T * M).exp();
+    out.A = expM.topLeftCorner(n, n);
+    out.Gamma = expM.topRightCorner(n, n);
+  }
+  return out;
+}
+
+// ∫₀ᵀ e^{A_c s} B_c B_cᵀ e^{A_cᵀ s} ds by Van Loan's block exponential, symmetrised.
+inline Eigen::MatrixXd sampled_white_noise_covariance(const Eigen::MatrixXd& A_c, const Eigen::MatrixXd& B_c, double T) {
+  const Eigen::Index n = A_c.rows();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  M.topLeftCorner(n, n) = -A_c;
+  M.topRightCorner(n, n) = B_c * B_c.transpose();
+  M.bottomRightCorner(n, n) = A_c.transpose();
+  const Eigen::MatrixXd expM = (T * M).exp();
+  const Eigen::MatrixXd Q = expM.bottomRightCorner(n, n).transpose() * expM.topRightCorner(n, n);
+  return 0.5 * (Q + Q.transpose());
+}
+
+}  // namespace hinf::models
