@@ -87,7 +87,7 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
 
 sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const std::vector<lmi::SparseEntry>& basis_error,
                               const Settings& settings, const IterationObserver& observer, const std::string& what,
-                              const std::string& infeasible_hint) {
+                              const std::string& infeasible_hint, const std::string& failure_hint) {
   require_memory(lmi, settings, ("the " + what).c_str());
   sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(g), solver_options(settings), VectorXd(),
                                            staged(observer, SolveStage::Synthesis));
@@ -96,7 +96,11 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
     throw infeasibility_verdict(lmi, sol, basis_error, settings, what, infeasible_hint);
   std::string msg = what + ": " + sdp::status_message(sol.status);
   if (!sol.detail.empty()) msg += ": " + sol.detail;
-  throw Error(error_code_for(sol.status), msg);
+  // phase I did not reach a strictly feasible point: say how far it got
+  if (!sol.phase1_path.empty() && sol.phase1_path.back()(lmi.num_params()) >= 0)
+    msg += "; phase I's smallest violation reached: " + fmt(sol.phase1_path.back()(lmi.num_params())) +
+           " (largest eigenvalue of the LMI, must be < 0; neither feasibility nor infeasibility is certified)";
+  throw Error(error_code_for(sol.status), msg + failure_hint);
 }
 
 // The γ back-off (docs/maths.md §6): at γ_b² = (1 + b)²·γ*², the point of largest LMI

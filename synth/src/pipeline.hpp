@@ -35,10 +35,11 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
                             const std::string& what, const std::string& hint);
 
 // Minimise g subject to `lmi` (Corollary 1 (21), or (124)); throws with the solver's reason,
-// or phase I's verdict, if it does not end Solved. `what` names the LMI in messages.
+// or phase I's verdict, if it does not end Solved. `what` names the LMI in messages;
+// `failure_hint` is added to a numerical failure (not to a certified infeasibility).
 sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const std::vector<lmi::SparseEntry>& basis_error,
                               const Settings& settings, const IterationObserver& observer, const std::string& what,
-                              const std::string& infeasible_hint);
+                              const std::string& infeasible_hint, const std::string& failure_hint = "");
 
 // The γ back-off solve (docs/maths.md §6): minimise `margin` of an LMI with g fixed.
 sdp::Solution solve_backoff(const lmi::LmiProblem& lmi, lmi::VarId margin, double gamma2_backoff,

@@ -27,11 +27,16 @@ using Eigen::VectorXd;
 
 namespace {
 
+// A necessary condition's value above which a numerical failure is reported as "near the
+// boundary of feasibility".
+constexpr double kNearBoundaryGain = 0.9;
 
 // Pre-flight (docs/maths.md [D10]): the error system contains the plant state, so the plant
 // must be Schur stable for every admissible F (docs/maths.md §2.5). Name the offending mode.
 // The plant is the scaled one; its eigenvalues are computed balanced (docs/maths.md §4.4).
-void preflight(const Plant& plant, const Settings& settings) {
+// Returns ‖E (zI − A)⁻¹ H‖∞ (NaN without uncertainty): how close the plant is to the
+// boundary of feasibility (119), for the message of a solve that fails near it.
+double preflight(const Plant& plant, const Settings& settings) {
   // γ* = 0 (docs/maths.md §2.4): without process noise the state stays at 0, without an
   // estimated output there is nothing to estimate — the zero filter is exact, and Theorem 1
   // has no strictly feasible point with g > 0 that the solver could approach.
@@ -79,7 +84,17 @@ void preflight(const Plant& plant, const Settings& settings) {
                       " rad/sample (verified), so no Lyapunov matrix serves every admissible F and Theorem 1 has no "
                       "solution for any γ (docs/maths.md (119)); H∞ norm of that channel " + fmt(w.gain) +
                       " (scaling H or E by less than 1/" + fmt(w.gain) + " meets this necessary condition)");
+    return w.gain;
   }
+  return NAN;
+}
+
+// What to add to a numerical failure near the boundary of feasibility (docs/maths.md (119)).
+std::string boundary_hint(double uncertainty_gain) {
+  if (!(uncertainty_gain > kNearBoundaryGain)) return "";
+  return "; the uncertainty channel's gain ‖E (zI − A)⁻¹ H‖∞ = " + fmt(uncertainty_gain) +
+         " is close to 1, the boundary beyond which no filter exists (docs/maths.md (119)): near it the feasible "
+         "set is thin and γ* large, likely beyond this solver's accuracy — reduce the uncertainty (H, E)";
 }
 
 
@@ -138,13 +153,14 @@ void certify_result(const Plant& plant, const certify::Theorem1Point& pt, const 
 // Theorem 1 / Corollary 1 on the scaled plant (docs/maths.md §3).
 SynthesisResult synthesize_augmented(const Plant& plant, const PlantScaling& sc, const Settings& settings,
                                      const IterationObserver& observer) {
-  preflight(plant, settings);
+  const double uncertainty_gain = preflight(plant, settings);
   const Theorem1Lmi T = build_theorem1(plant);
   const std::vector<lmi::SparseEntry> basis_error = theorem1_basis_error(T, plant);
   // Corollary 1, docs/maths.md (21): minimise γ² subject to LMI (18)
   const sdp::Solution sol = solve_min_gamma(T.lmi, T.g, basis_error, settings, observer, "Theorem 1 LMI",
                                             " (the plant is robustly Schur stable for the sampled F, but the uncertainty "
-                                            "bound H, E is too large for a quadratic certificate)");
+                                            "bound H, E is too large for a quadratic certificate)",
+                                            boundary_hint(uncertainty_gain));
   SynthesisResult res;
   res.solver = solver_info(sol, T.lmi, sc, settings);
   record_bracket(T.lmi, T.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);
