@@ -51,8 +51,8 @@ VectorXd balancing_scaling(const MatrixXd& A0, const MatrixXd& In0, const Matrix
       d(i) *= f;
       A.col(i) *= f;
       A.row(i) /= f;
-      Out.col(i) *= f;
-      In.row(i) /= f;
+      if (Out.size() > 0) Out.col(i) *= f;  // (never a row or column of an empty matrix: norms())
+      if (In.size() > 0) In.row(i) /= f;
       changed = true;
     }
     if (!changed) break;

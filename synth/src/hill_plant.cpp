@@ -143,6 +143,7 @@ Plant build_hill_plant(const HillPlantSpec& model) {
   }
   require_representable(model, plant);
   validate_plant(plant);
+  plant.G = MatrixXd::Zero(6, 0);  // no known input (the thrust is in A through K, or absent)
   return plant;
 }
 

@@ -96,7 +96,7 @@ Plant scaled_plant(const Plant& P, const PlantScaling& s) {
   q.L = s.output * P.L * D;
   q.H = Dinv * P.H * s.uncertainty;
   q.E = P.E * D / s.uncertainty;
-  q.G = Dinv * P.G;  // the known input u keeps its units
+  q.G = P.G.size() > 0 ? MatrixXd(Dinv * P.G) : MatrixXd::Zero(P.n(), 0);  // u keeps its units
   return q;
 }
 

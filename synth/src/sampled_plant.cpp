@@ -42,7 +42,7 @@ Plant sample_plant(const Plant& c, const SamplingSpec& spec) {
   d.A = s.A;
   d.B = spec.white_process_noise ? covariance_factor(models::sampled_white_noise_covariance(c.A, c.B, T))
                                  : MatrixXd(s.Gamma * c.B);
-  d.G = s.Gamma * c.G;
+  d.G = c.G.size() > 0 ? MatrixXd(s.Gamma * c.G) : MatrixXd::Zero(c.n(), 0);
   if (c.uncertain()) {
     d.H = s.Gamma * c.H;
     if (spec.method == models::Discretisation::Tustin)
