@@ -77,25 +77,25 @@ void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
 void IterationTable::operator()(const synth::IterationReport& report) {
   using synth::SolveStage;
   const sdp::Progress& r = report.progress;
-  if (r.newton_step) {  // only when the table has been quiet for a while (large problems)
-    if (r.elapsed_s - last_line_s_ < kQuietSeconds) return;
-    std::fprintf(stderr, "%5d  %4d  %10.3e  %16s  %10s  %6d  %9.2e  %7.3f  (newton iteration in progress)\n", r.phase,
-                 r.centering, r.t, "", "", r.newton, r.lambda2, r.elapsed_s);
-    last_line_s_ = r.elapsed_s;
-    return;
-  }
-  last_line_s_ = r.elapsed_s;
+  if (r.newton_step && r.elapsed_s - last_line_s_ < kQuietSeconds) return;  // only on large problems
   if (!started_ || report.stage != stage_) {
     if (report.stage == SolveStage::Backoff)
       std::fprintf(stderr, "==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====\n");
     std::fprintf(stderr, "phase  step  %10s  %16s  %10s  newton  %9s  time[s]\n", "t", "objective", "gap", "lambda^2");
     started_ = true;
     stage_ = report.stage;
+    last_phase_ = 0;
   }
-  if (r.phase == 2 && r.centering == 0)
+  if (r.phase == 2 && last_phase_ != 2)
     std::fprintf(stderr, "---- phase 2: minimise %s ----\n", report.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
-  std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
-               r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
+  last_phase_ = r.phase;
+  last_line_s_ = r.elapsed_s;
+  if (r.newton_step)
+    std::fprintf(stderr, "%5d  %4d  %10.3e  %16s  %10s  %6d  %9.2e  %7.3f  (newton iteration in progress)\n", r.phase,
+                 r.centering, r.t, "", "", r.newton, r.lambda2, r.elapsed_s);
+  else
+    std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
+                 r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
 }
 
 }  // namespace hinf::cli

@@ -47,6 +47,7 @@ class IterationTable {
   bool started_ = false;
   synth::SolveStage stage_ = synth::SolveStage::Synthesis;
   double last_line_s_ = 0;
+  int last_phase_ = 0;
 };
 
 }  // namespace hinf::cli
