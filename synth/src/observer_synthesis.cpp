@@ -89,17 +89,11 @@ SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, 
   res.solver = solver_info(sol, O.lmi, sc, settings);
   record_bracket(O.lmi, O.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);
 
-  certify::ObserverPoint pt;
-  if (settings.gamma_backoff > 0) {
-    const double gamma2_backoff = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
-    const ObserverLmi Ob = build_observer_lmi_backoff(plant, gamma2_backoff);
-    const sdp::Solution sb = solve_backoff(Ob.lmi, Ob.margin, gamma2_backoff, settings, observer);
-    res.solver.newton_iterations += sb.newton_total;
-    res.solver.time_s += sb.elapsed_s;
-    pt = observer_point(Ob, plant, sb.x, gamma2_backoff);
-  } else {
-    pt = observer_point(O, plant, sol.x, sol.objective);
-  }
+  const auto backoff = solve_gamma_backoff<ObserverLmi>(
+      sol, [&](double g2) { return build_observer_lmi_backoff(plant, g2); }, settings, observer, res.solver);
+  const certify::ObserverPoint pt =
+      backoff ? observer_point(backoff->problem, plant, backoff->solution.x, backoff->gamma_squared)
+              : observer_point(O, plant, sol.x, sol.objective);
   res.filter = recover_observer(pt, plant);
   certify_at_point(plant, certify::observer_lmi_matrix(plant, pt), pt.g, settings, res);
   const VectorXd eig_P = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.P, Eigen::EigenvaluesOnly).eigenvalues();

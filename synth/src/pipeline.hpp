@@ -1,6 +1,7 @@
 // The steps every synthesis pipeline shares (Theorem 1, synthesize.cpp; the observer form,
 // observer_synthesis.cpp): internal to hinf_synth.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,28 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
 // The γ back-off solve (docs/maths.md §6): minimise `margin` of an LMI with g fixed.
 sdp::Solution solve_backoff(const lmi::LmiProblem& lmi, lmi::VarId margin, double gamma2_backoff,
                             const Settings& settings, const IterationObserver& observer);
+
+// The γ back-off (docs/maths.md §6), when settings.gamma_backoff > 0: the problem
+// build(γ_b²) (an LMI with a `margin` variable and g fixed at γ_b² = (1 + b)²·γ*²) solved
+// for its largest margin, its work added to `info`. Empty when the back-off is off.
+template <class Problem>
+struct Backoff {
+  Problem problem;
+  sdp::Solution solution;
+  double gamma_squared = 0;
+};
+template <class Problem, class Build>
+std::optional<Backoff<Problem>> solve_gamma_backoff(const sdp::Solution& sol, Build&& build, const Settings& settings,
+                                                   const IterationObserver& observer, SolverInfo& info) {
+  if (!(settings.gamma_backoff > 0)) return std::nullopt;
+  Backoff<Problem> b;
+  b.gamma_squared = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
+  b.problem = build(b.gamma_squared);
+  b.solution = solve_backoff(b.problem.lmi, b.problem.margin, b.gamma_squared, settings, observer);
+  info.newton_iterations += b.solution.newton_total;
+  info.time_s += b.solution.elapsed_s;
+  return b;
+}
 
 // Checks 2–4 of the certificate (docs/maths.md §7.2–§7.4) at γ, on the error system of the
 // filter's form (certify::error_system); plant, filter and γ in the scaled units.

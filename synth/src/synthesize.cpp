@@ -165,17 +165,11 @@ SynthesisResult synthesize_augmented(const Plant& plant, const PlantScaling& sc,
   res.solver = solver_info(sol, T.lmi, sc, settings);
   record_bracket(T.lmi, T.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);
 
-  certify::Theorem1Point pt;
-  if (settings.gamma_backoff > 0) {
-    const double gamma2_backoff = sol.objective * (1 + settings.gamma_backoff) * (1 + settings.gamma_backoff);
-    const Theorem1Lmi Tb = build_theorem1_backoff(plant, gamma2_backoff);
-    const sdp::Solution sb = solve_backoff(Tb.lmi, Tb.margin, gamma2_backoff, settings, observer);
-    res.solver.newton_iterations += sb.newton_total;
-    res.solver.time_s += sb.elapsed_s;
-    pt = theorem1_point(Tb, plant, sb.x, gamma2_backoff);
-  } else {
-    pt = theorem1_point(T, plant, sol.x, sol.objective);
-  }
+  const auto backoff = solve_gamma_backoff<Theorem1Lmi>(
+      sol, [&](double g2) { return build_theorem1_backoff(plant, g2); }, settings, observer, res.solver);
+  const certify::Theorem1Point pt =
+      backoff ? theorem1_point(backoff->problem, plant, backoff->solution.x, backoff->gamma_squared)
+              : theorem1_point(T, plant, sol.x, sol.objective);
   res.filter = recover_filter(pt);
   certify_result(plant, pt, settings, res);
   return res;
