@@ -32,8 +32,10 @@ std::string vector_text(const Eigen::VectorXcd& v) {
 }
 
 // The direction v (‖v‖ = 1, largest entry real and positive) of an undetectable mode λ
-// (|λ| ≥ 1, (A − λI)v ≈ 0, Cv ≈ 0), if any: the PBH test of (126) at each eigenvalue.
-void require_detectable(const Plant& plant) {
+// (|λ| ≥ 1, (A − λI)v ≈ 0, Cv ≈ 0), if any: the PBH test of (126) at each eigenvalue of the
+// scaled plant; v and its residuals are reported in the user's state coordinates
+// (x = diag(state_scale) x̃, docs/maths.md §4.4).
+void require_detectable(const Plant& plant, const VectorXd& state_scale) {
   const int n = plant.n(), m = plant.m();
   Eigen::ComplexEigenSolver<MatrixXd> es(plant.A, false);
   MatrixXd AC(n + m, n);
@@ -48,26 +50,29 @@ void require_detectable(const Plant& plant) {
     const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(pbh, Eigen::ComputeFullV);
     const double sigma_min = svd.singularValues()(n - 1);
     if (sigma_min > kPbhRelativeTolerance * scale) continue;
-    Eigen::VectorXcd v = svd.matrixV().col(n - 1);
+    Eigen::VectorXcd v = state_scale.cast<std::complex<double>>().asDiagonal() * svd.matrixV().col(n - 1);
+    v.normalize();
     Eigen::Index big = 0;
     v.cwiseAbs().maxCoeff(&big);
     v *= std::abs(v(big)) / v(big);
-    const Eigen::VectorXcd Av = plant.A.cast<std::complex<double>>() * v - lambda * v;
-    const Eigen::VectorXcd Cv = plant.C.cast<std::complex<double>>() * v;
+    const Eigen::VectorXcd v_scaled = state_scale.cwiseInverse().cast<std::complex<double>>().asDiagonal() * v;
+    const Eigen::VectorXcd Av = (plant.A.cast<std::complex<double>>() * v_scaled - lambda * v_scaled);
+    const Eigen::VectorXcd Cv = plant.C.cast<std::complex<double>>() * v_scaled;
     throw Error(ErrorCode::Infeasible,
                 "infeasible: the mode λ = " + complex_text(lambda) + " of A (|λ| = " + fmt(std::abs(lambda)) +
                     " ≥ 1) is not detectable from y: for the direction v = " + vector_text(v) +
-                    " (scaled state units), ‖(A − λI)v‖ = " + fmt(Av.norm()) + " and ‖C v‖ = " + fmt(Cv.norm()) +
+                    " (in the plant's state coordinates), residuals ‖(A − λI)v‖ = " + fmt(Av.norm()) +
+                    " and ‖C v‖ = " + fmt(Cv.norm()) + " in the scaled units of docs/maths.md §4.4" +
                     ", so e = x − x̂ keeps this mode for every gain K and no filter makes the error stable "
                     "(docs/maths.md (126)); measure this mode, or leave it out of the model");
   }
 }
 
-void preflight_observer(const Plant& plant) {
+void preflight_observer(const Plant& plant, const VectorXd& state_scale) {
   if (plant.L.isZero(0.0))
     throw Error(ErrorCode::Infeasible,
                 "ill-posed: the estimated-output matrix L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
-  require_detectable(plant);
+  require_detectable(plant, state_scale);
   if (plant.B.isZero(0.0) && certify::spectral_radius(plant.A) < 1.0)
     throw Error(ErrorCode::Infeasible,
                 "ill-posed: the process-noise matrix B is zero and A is Schur stable, so K = 0 makes the error decay "
@@ -78,7 +83,7 @@ void preflight_observer(const Plant& plant) {
 
 SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, const Settings& settings,
                                     const IterationObserver& observer) {
-  preflight_observer(plant);
+  preflight_observer(plant, sc.state);
   const ObserverLmi O = build_observer_lmi(plant);
   const std::vector<lmi::SparseEntry> basis_error = observer_basis_error(O, plant);
   const sdp::Solution sol =

@@ -220,6 +220,23 @@ TEST(ObserverForm, UndetectableModeIsNamed) {
   }
 }
 
+// The direction is reported in the user's coordinates, not the balanced ones: the unstable
+// mode of T diag(1.05, 0.5) T⁻¹, T = [1, 0; 2000, 1], is [1, 2000]/‖·‖, and C = [−2000, 1] misses it.
+TEST(ObserverForm, UndetectableDirectionIsInTheUsersCoordinates) {
+  MatrixXd T(2, 2), C(1, 2);
+  T << 1, 0, 2000, 1;
+  C << -2000, 1;
+  const MatrixXd A = T * Eigen::Vector2d(1.05, 0.5).asDiagonal() * T.inverse();
+  const Plant P = certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2));
+  try {
+    hinf::synth::synthesize(P, Settings{});
+    FAIL() << "no exception";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
+    EXPECT_NE(std::string(e.what()).find("v = [0.0004999999375, 0.999999875]"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ObserverForm, AugmentedFormOnAnIntegratorSaysWhyAndPointsToTheObserverForm) {
   Settings s;
   s.form = FormChoice::Augmented;
