@@ -10,6 +10,7 @@ namespace hinf::cli {
 using Action = std::function<int()>;
 
 void add_solve(CLI::App& app, Action& action);
+void add_kalman(CLI::App& app, Action& action);
 void add_analyze(CLI::App& app, Action& action);
 void add_export_sdpa(CLI::App& app, Action& action);
 void add_verify(CLI::App& app, Action& action);

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "hinf-synth " HINF_VERSION);
   hinf::cli::Action action;
   hinf::cli::add_solve(app, action);
+  hinf::cli::add_kalman(app, action);
   hinf::cli::add_analyze(app, action);
   hinf::cli::add_export_sdpa(app, action);
   hinf::cli::add_verify(app, action);

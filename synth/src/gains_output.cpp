@@ -47,6 +47,7 @@ void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form)
   kv(out, "hinf_norm_nominal", c.hinf_norm_nominal);  // check 3
   kv(out, "hinf_norm_peak_frequency", c.hinf_norm_peak_frequency);
   kv(out, "hinf_norm_ok", c.hinf_norm_ok);
+  kv(out, "h2_norm_nominal", c.h2_norm_nominal);  // RMS error under unit white noise
   kv(out, "robust_bound", c.robust_bound);  // check 4
   kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
   kv(out, "robust_multiplier", c.robust_multiplier);
@@ -64,15 +65,24 @@ void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form)
   out << YAML::EndMap;
 }
 
+std::string eigen_version() {
+  return std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+         std::to_string(EIGEN_MINOR_VERSION);
+}
+
 // How the solver ran and with what it was built; the timing last (the only bytes that
 // differ between two runs).
 void emit_solver(YAML::Emitter& out, const SolverInfo& s) {
   out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
-  kv(out, "method", "log-det barrier path following, Newton steps by Ipopt");
+  kv(out, "method", s.method);
+  if (s.status == sdp::Status::NotRun) {  // no SDP solved (the Kalman predictor)
+    kv(out, "eigen_version", eigen_version());
+    out << YAML::EndMap;
+    return;
+  }
   kv(out, "status", sdp::status_message(s.status));
   kv(out, "ipopt_version", sdp::newton_engine_version());
-  kv(out, "eigen_version", std::to_string(EIGEN_WORLD_VERSION) + "." +
-                               std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION));
+  kv(out, "eigen_version", eigen_version());
   kv(out, "yaml_cpp", "0.7");
   kv(out, "newton_iterations", s.newton_iterations);
   kv(out, "phase1_iterations", s.phase1_iterations);

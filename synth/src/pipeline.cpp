@@ -7,6 +7,7 @@
 
 #include "hinf/certify/dense_lmi.hpp"
 #include "hinf/certify/error_system.hpp"
+#include "hinf/certify/h2_norm.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/scaled_bounded_real.hpp"
 #include "hinf/certify/stability.hpp"
@@ -149,6 +150,7 @@ Certificate certify_checks(const Plant& plant, const Filter& filter, double gamm
   c.hinf_norm_nominal = hn.norm;
   c.hinf_norm_peak_frequency = hn.peak_frequency;
   c.hinf_norm_ok = hn.norm <= gamma;
+  c.h2_norm_nominal = certify::discrete_h2_norm(es);
   // check 4: the robust analysis LMI at γ, decided by the bounded-real lemma with the
   // best S-procedure multiplier (no SDP solver involved; certify/scaled_bounded_real.hpp)
   certify::ScaledBoundedReal robust(plant, es);
@@ -194,6 +196,7 @@ Certificate in_user_units(Certificate c, const PlantScaling& s, const Filter& us
   const double f = s.gamma_factor(), ls = s.uncertainty * s.output;
   c.gamma /= f;
   c.hinf_norm_nominal /= f;
+  c.h2_norm_nominal /= f;
   c.robust_bound /= f;
   c.robust_multiplier /= ls * ls;
   c.norm_A_F = user.A_F.norm();

@@ -5,7 +5,9 @@
 #   verify exit 0; with one entry of A_F changed, verify exit 1 (the realisation is no longer
 #   A − K C); codegen exit 0;
 # - the triple integrator with a known input: solve exit 0 with G_F in the gains file,
-#   verify exit 0; codegen exit 2 naming filter.G_F (its C has no u argument yet).
+#   verify exit 0; codegen exit 2 naming filter.G_F (its C has no u argument yet);
+# - kalman on the double integrator: a certified gains file whose H2 norm is below, and
+#   gamma above, the H∞ filter's.
 set -u
 exe=$1 plants=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-observer-XXXXXX")
@@ -41,6 +43,17 @@ run 1 verify_tampered verify "$dint" "$work/tampered.yaml"
 grep -q "NOT A - K C" "$work/verify_tampered.out" || say "verify does not name the broken realisation"
 mkdir "$work/c"
 run 0 codegen_dint codegen "$work/dint.yaml" --out "$work/c" --prefix dint
+
+# the Kalman predictor of the same plant: a certified gains file; its H2 below the H∞
+# filter's, its gamma above (each filter wins in its own norm)
+run 0 kalman_dint kalman "$dint" -o "$work/kalman.yaml"
+grep -q "method: .Kalman one-step predictor" "$work/kalman.yaml" || say "kalman gains file does not say what it is"
+run 0 verify_kalman verify "$dint" "$work/kalman.yaml"
+h2() { sed -n 's/^  h2_norm_nominal: //p' "$1"; }
+gam() { sed -n 's/^gamma: //p' "$1"; }
+python3 -c "import sys; k2, h2, kg, hg = map(float, sys.argv[1:]); sys.exit(0 if k2 <= h2 * (1 + 1e-9) and kg >= hg * (1 - 1e-9) else 1)" \
+  "$(h2 "$work/kalman.yaml")" "$(h2 "$work/dint.yaml")" "$(gam "$work/kalman.yaml")" "$(gam "$work/dint.yaml")" \
+  || say "Kalman H2 $(h2 "$work/kalman.yaml") vs Hinf $(h2 "$work/dint.yaml"); gamma $(gam "$work/kalman.yaml") vs $(gam "$work/dint.yaml")"
 
 tint=$plants/triple-integrator-known-input.yaml
 run 0 solve_tint solve "$tint" -o "$work/tint.yaml"

@@ -8,10 +8,12 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <random>
 #include <string>
 
 #include "hinf/certify/error_system.hpp"
+#include "hinf/certify/h2_norm.hpp"
 #include "hinf/certify/riccati_filter.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/runtime/lti_filter.hpp"
@@ -203,21 +205,24 @@ TEST(ObserverForm, UncontrolledHillPlantUndiscounted) {
   EXPECT_NE(res.bound.find("error dynamics"), std::string::npos) << res.bound;
 }
 
+// synthesize(P) must end Infeasible with every one of `parts` in its message.
+void expect_infeasible_naming(const Plant& P, std::initializer_list<const char*> parts) {
+  try {
+    hinf::synth::synthesize(P, Settings{});
+    ADD_FAILURE() << "no exception";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
+    for (const char* part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
 TEST(ObserverForm, UndetectableModeIsNamed) {
   MatrixXd A(2, 2), C(1, 2);
   A << 1.1, 0, 0, 0.5;
   C << 0, 1;  // the unstable mode is not measured
-  const Plant P = certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2));
-  try {
-    hinf::synth::synthesize(P, Settings{});
-    FAIL() << "no exception";
-  } catch (const hinf::Error& e) {
-    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
-    const std::string m = e.what();
-    EXPECT_NE(m.find("λ = 1.1"), std::string::npos) << m;
-    EXPECT_NE(m.find("not detectable"), std::string::npos) << m;
-    EXPECT_NE(m.find("v = [1, 0]"), std::string::npos) << m;
-  }
+  expect_infeasible_naming(
+      certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2)),
+      {"λ = 1.1", "not detectable", "v = [1, 0]"});
 }
 
 // The direction is reported in the user's coordinates, not the balanced ones: the unstable
@@ -227,14 +232,9 @@ TEST(ObserverForm, UndetectableDirectionIsInTheUsersCoordinates) {
   T << 1, 0, 2000, 1;
   C << -2000, 1;
   const MatrixXd A = T * Eigen::Vector2d(1.05, 0.5).asDiagonal() * T.inverse();
-  const Plant P = certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2));
-  try {
-    hinf::synth::synthesize(P, Settings{});
-    FAIL() << "no exception";
-  } catch (const hinf::Error& e) {
-    EXPECT_EQ(e.code(), hinf::ErrorCode::Infeasible);
-    EXPECT_NE(std::string(e.what()).find("v = [0.0004999999375, 0.999999875]"), std::string::npos) << e.what();
-  }
+  expect_infeasible_naming(
+      certain_plant(A, MatrixXd::Ones(2, 1), C, MatrixXd::Ones(1, 1), MatrixXd::Identity(2, 2)),
+      {"v = [0.0004999999375, 0.999999875]"});
 }
 
 TEST(ObserverForm, AugmentedFormOnAnIntegratorSaysWhyAndPointsToTheObserverForm) {
@@ -278,6 +278,51 @@ TEST(ObserverForm, SimilarityTwinsOfUnstablePlantsGiveTheSameGamma) {
     const double gQ = hinf::synth::synthesize(Q, observer_settings()).gamma;
     std::printf("  trial %d: γ = %.10g, twin %.10g\n", trial, gP, gQ);
     EXPECT_NEAR(gQ / gP, 1.0, 1e-6) << "trial " << trial;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// docs/maths.md (132) for the first-order error system of a scalar observer (127):
+// ‖l [b, −k d]/(z − α)‖₂² = l² (b² + k² d²)/(1 − α²).
+TEST(H2Norm, FirstOrderClosedForm) {
+  const double a = 0.9, b = 0.4, c = 2, d = 0.3, l = 1.5, k = 0.2, alpha = a - k * c;
+  hinf::StateSpace s;
+  s.A = MatrixXd::Constant(1, 1, alpha);
+  s.B = (MatrixXd(1, 2) << b, -k * d).finished();
+  s.C = MatrixXd::Constant(1, 1, l);
+  s.D = MatrixXd::Zero(1, 2);
+  EXPECT_NEAR(hinf::certify::discrete_h2_norm(s) / std::sqrt(l * l * (b * b + k * k * d * d) / (1 - alpha * alpha)), 1.0,
+              1e-14);
+  s.A(0, 0) = 1.0;
+  EXPECT_THROW(hinf::certify::discrete_h2_norm(s), hinf::Error);
+}
+
+// The Kalman predictor minimises the RMS error (H2) over all gains, the H∞ filter the
+// worst-case gain: each beats the other in its own norm, never in the other's. Scalar
+// plants: the Kalman H2 equals a dense scan of (132) over the gain.
+TEST(Kalman, EachFilterWinsInItsOwnNorm) {
+  for (const Plant& P : {scalar(1, 1, 1, 1, 1), scalar(1.2, 0.3, 2, 0.5, 1), double_integrator(0.1, 0.5),
+                         triple_integrator_with_input()}) {
+    const hinf::synth::SynthesisResult kf = hinf::synth::kalman_predictor(P, Settings{});
+    const hinf::synth::SynthesisResult hi = hinf::synth::synthesize(P, Settings{});
+    std::printf("  n=%d: Kalman H2 %.10g gamma %.10g | Hinf H2 %.10g gamma %.10g\n", P.n(),
+                kf.certificate.h2_norm_nominal, kf.gamma, hi.certificate.h2_norm_nominal, hi.gamma);
+    EXPECT_TRUE(kf.certificate.passed);
+    EXPECT_EQ(kf.filter.form, FilterForm::Observer);
+    EXPECT_LE(kf.certificate.h2_norm_nominal, hi.certificate.h2_norm_nominal * (1 + 1e-9));
+    EXPECT_GE(kf.gamma, hi.gamma * (1 - 1e-9));
+    if (P.n() == 1) {
+      const double a = P.A(0, 0), b = P.B(0, 0), c = P.C(0, 0), d = P.D(0, 0), l = P.L(0, 0);
+      double best = INFINITY;
+      for (int i = 1; i < 400000; ++i) {
+        const double k = ((a - 1) + 2.0 * i / 400000) / c, alpha = a - k * c;
+        best = std::min(best, l * l * (b * b + k * k * d * d) / (1 - alpha * alpha));
+      }
+      EXPECT_NEAR(kf.certificate.h2_norm_nominal / std::sqrt(best), 1.0, 1e-8);
+    }
   }
 }
 

@@ -30,6 +30,9 @@ struct Certificate {
   double hinf_norm_nominal = 0;
   double hinf_norm_peak_frequency = 0;    // rad/sample
   bool hinf_norm_ok = false;
+  // not a check: the RMS of the estimation error under unit white noise (w, v), the H2
+  // norm of the nominal error system (docs/maths.md (132)); what a Kalman filter minimises
+  double h2_norm_nominal = 0;
   // check 4: robust analysis LMI (Lemma 1 + S-procedure) for the fixed filter, decided by
   // the bounded-real lemma: feasible at γ iff ‖[C̄; √λĒ](zI − Ā)⁻¹[B̄/γ, H̄/√λ]‖∞ < 1
   // for some multiplier λ > 0
@@ -50,6 +53,8 @@ struct Certificate {
 };
 
 struct SolverInfo {
+  // how the filter was computed; an SDP's record below only when status is not NotRun
+  std::string method = "log-det barrier path following, Newton steps by Ipopt";
   sdp::Status status = sdp::Status::NotRun;
   int newton_iterations = 0;       // Ipopt iterations, phase I + II
   int phase1_iterations = 0;
@@ -108,6 +113,12 @@ struct IterationReport {
 using IterationObserver = std::function<void(const IterationReport&)>;
 SynthesisResult synthesize(const Plant& plant, const Settings& settings,
                            const IterationObserver& observer);
+
+// The Kalman one-step predictor of the nominal plant (docs/maths.md §8.1 at γ = ∞, (133)):
+// Q = B Bᵀ, R = D Dᵀ, observer form (needs (A, C) detectable, D Dᵀ ≻ 0), with the
+// certificate of §7 at the smallest γ it achieves (its nominal H∞ norm, or with uncertainty
+// the robust analysis bound, each times 1 + 1e-7). No SDP is solved for the filter itself.
+SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings);
 
 // Independent checks of docs/maths.md §7 for any filter against a plant at bound gamma.
 // `lmi_point` checks (check 1) are only possible for synthesised filters and are
