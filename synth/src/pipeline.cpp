@@ -37,8 +37,12 @@ sdp::Options solver_options(const Settings& settings) {
 
 // Refuses, before anything of its size is allocated, an SDP whose solve would need more
 // memory than solver.max_memory_mb (the solver's model, hinf/sdp/memory_model.hpp).
+double estimated_solve_mib(const lmi::LmiProblem& lmi) {
+  return sdp::estimated_peak_bytes(lmi.order(), lmi.num_params() + 2) / (1 << 20);
+}
+
 void require_memory(const lmi::LmiProblem& lmi, const Settings& settings, const char* what) {
-  const double mib = sdp::estimated_peak_bytes(lmi.order(), lmi.num_params() + 2) / (1 << 20);
+  const double mib = estimated_solve_mib(lmi);
   if (mib <= settings.max_memory_mb) return;
   throw Error(ErrorCode::InvalidInput,
               std::string(what) + " has order " + std::to_string(lmi.order()) + " and " +

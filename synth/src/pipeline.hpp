@@ -19,6 +19,10 @@ std::string fmt(double v);
 // The solver's own options from the user's settings (as Ceres builds Minimizer::Options).
 sdp::Options solver_options(const Settings& settings);
 
+// The solver's memory model (sdp/memory_model.hpp) for this LMI, MiB: p variables plus
+// the two of phase I.
+double estimated_solve_mib(const lmi::LmiProblem& lmi);
+
 // Refuses (Error(InvalidInput) naming max_memory_mb), before anything of its size is
 // allocated, an SDP whose solve the solver's memory model puts above solver.max_memory_mb.
 void require_memory(const lmi::LmiProblem& lmi, const Settings& settings, const char* what);

@@ -15,7 +15,6 @@
 #include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/sdp/dual_bound.hpp"
-#include "hinf/sdp/memory_model.hpp"
 #include "pipeline.hpp"
 #include "observer_lmi.hpp"
 #include "theorem1.hpp"
@@ -243,7 +242,7 @@ ProblemSize problem_size(const Plant& user_plant, const Settings& settings) {
   const lmi::LmiProblem lmi = size.form == FilterForm::Observer ? build_observer_lmi(plant).lmi : build_theorem1(plant).lmi;
   size.lmi_order = lmi.order();
   size.variables = lmi.num_params();
-  size.memory_mib = sdp::estimated_peak_bytes(lmi.order(), lmi.num_params() + 2) / (1 << 20);
+  size.memory_mib = estimated_solve_mib(lmi);
   return size;
 }
 
