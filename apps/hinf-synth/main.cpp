@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   hinf::cli::add_verify(app, action);
   hinf::cli::add_check(app, action);
   hinf::cli::add_codegen(app, action);
+  hinf::cli::add_sweep(app, action);
   // A mistyped subcommand would otherwise only get CLI11's "A subcommand is required".
   if (argc >= 2 && argv[1][0] != '-') {
     std::vector<std::string> names;

@@ -1,16 +1,12 @@
 #include "hinf/sim/plots.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
 
 #include "hinf/common/atomic_file.hpp"
-
-extern char** environ;
+#include "hinf/common/gnuplot.hpp"
 
 namespace hinf::sim {
 namespace {
@@ -23,21 +19,7 @@ std::string colour(const std::string& name) {
   return it == kColour.end() ? "#000000" : it->second;
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-int run_gnuplot(const std::string& script) {
-  std::string prog = "gnuplot";
-  char* argv[] = {prog.data(), const_cast<char*>(script.c_str()), nullptr};
-  pid_t pid;
-  if (posix_spawnp(&pid, "gnuplot", nullptr, nullptr, argv, environ) != 0) return -1;
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+std::string quoted(const std::string& s) { return gnuplot_quoted(s); }
 
 // Data: t, thrust (3), then |e_p|, |e_v| per filter.
 std::string plot_data(const Trajectory& tr) {

@@ -3,6 +3,7 @@
 // certificate's checks 2–4, units, the optimality bracket and the solver's record.
 #include "pipeline.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include "hinf/certify/dense_lmi.hpp"
@@ -90,12 +91,30 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
                    "conditioned");
 }
 
+// The retry of a numerically failed solve in wider balls ‖x‖ < ρ (docs/maths.md §4.3):
+// each retry multiplies the feasibility radius and phase I's by this factor, up to the
+// largest radius (beyond ~1e16 the ball's barrier term is lost in round-off of ‖x‖²).
+constexpr double kRetryRadiusFactor = 1e4;
+constexpr double kMaxRetryRadius = 1e16;
+
 sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const std::vector<lmi::SparseEntry>& basis_error,
                               const Settings& settings, const IterationObserver& observer, const std::string& what,
                               const std::string& infeasible_hint, const std::string& failure_hint) {
   require_memory(lmi, settings, ("the " + what).c_str());
-  sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(g), solver_options(settings), VectorXd(),
+  sdp::Options options = solver_options(settings);
+  const auto start = std::chrono::steady_clock::now();
+  sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(),
                                            staged(observer, SolveStage::Synthesis));
+  // Near the boundary of feasibility the feasible set lies far out (the Lyapunov matrix,
+  // the multiplier and γ* grow as the uncertainty channel's gain nears 1): a centring that
+  // fails on round-off is retried with both balls wider (docs/maths.md §4.3).
+  while (sol.status == sdp::Status::NumericalError && options.feasibility_radius < kMaxRetryRadius) {
+    options.feasibility_radius = std::min(options.feasibility_radius * kRetryRadiusFactor, kMaxRetryRadius);
+    options.time_limit_s =
+        settings.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.time_limit_s <= 0) break;
+    sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(), staged(observer, SolveStage::Synthesis));
+  }
   if (sol.status == sdp::Status::Solved) return sol;
   if (sol.status == sdp::Status::Infeasible)
     throw infeasibility_verdict(lmi, sol, basis_error, settings, what, infeasible_hint);

@@ -35,4 +35,10 @@ SynthConfig load_config(const std::string& path);
 // sha256 is the hash of `yaml_text`.
 SynthConfig parse_config(const std::string& yaml_text, const std::string& source_name);
 
+// The config text with the plain number at `key_path` ("hill.delta_bar", "system.sample_time")
+// replaced by `value`, everything else byte for byte (for `hinf-synth sweep`). Error
+// InvalidInput naming the key if the config has no such key or it does not hold a plain number.
+std::string with_value(const std::string& yaml_text, const std::string& source_name, const std::string& key_path,
+                       double value);
+
 }  // namespace hinf::synth

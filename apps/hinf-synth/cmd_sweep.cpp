@@ -1,0 +1,224 @@
+// hinf-synth sweep CONFIG (--param NAME=LO:STEP:HI | --max-feasible NAME=LO:HI)
+//   [-o sweep.csv] [--json sweep.json] [--plot sweep.png] [--tolerance T]
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "hinf/common/atomic_file.hpp"
+#include "hinf/common/gnuplot.hpp"
+#include "hinf/common/input_file.hpp"
+#include "hinf/synth/sweep.hpp"
+
+namespace hinf::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct SweepArgs {
+  std::string config, param, max_feasible, csv, json, plot;
+  double tolerance = 1e-3;
+};
+
+// NAME=RANGE → (NAME, RANGE); Error InvalidInput naming the option otherwise.
+std::pair<std::string, std::string> name_and_range(const std::string& text, const std::string& option) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw Error(ErrorCode::InvalidInput, option + " '" + text + "': expected NAME=RANGE (e.g. delta_bar=0:0.05:1)",
+                option);
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+const char* outcome_word(ErrorCode c) {
+  switch (c) {
+    case ErrorCode::Ok: return "certified";
+    case ErrorCode::Infeasible: return "infeasible";
+    case ErrorCode::NumericalFailure: return "numerical_failure";
+    case ErrorCode::InvalidInput: return "invalid_input";
+    case ErrorCode::CheckFailed: return "check_failed";
+  }
+  return "unknown";
+}
+
+std::string csv_field(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string sweep_csv(const std::string& name, const std::vector<synth::SweepPoint>& points) {
+  std::ostringstream os;
+  os << "parameter,value,outcome,exit_code,gamma,gamma_lower,form,time_s,message\n";
+  for (const auto& p : points) {
+    const bool ok = p.outcome == ErrorCode::Ok;
+    os << name << ',' << num(p.value) << ',' << outcome_word(p.outcome) << ',' << exit_code(p.outcome) << ','
+       << (ok ? num(p.gamma) : "") << ',' << (ok && p.gap_certified ? num(p.gamma_lower) : "") << ',' << p.form
+       << ',' << num(p.time_s) << ',' << csv_field(p.message) << '\n';
+  }
+  return os.str();
+}
+
+Json point_json(const synth::SweepPoint& p) {
+  const bool ok = p.outcome == ErrorCode::Ok;
+  Json j = Json::object();
+  j["value"] = p.value;
+  j["outcome"] = outcome_word(p.outcome);
+  j["exit_code"] = exit_code(p.outcome);
+  j["gamma"] = ok ? Json(p.gamma) : Json(nullptr);
+  j["gamma_lower"] = ok && p.gap_certified ? Json(p.gamma_lower) : Json(nullptr);
+  j["form"] = ok ? Json(p.form) : Json(nullptr);
+  j["time_s"] = p.time_s;
+  j["message"] = p.message;
+  return j;
+}
+
+// γ against the parameter (log scale), the points that were not certified marked on the axis.
+// `floor` is where the uncertified points are drawn (the smallest certified γ, or 1).
+std::string plot_script(const std::string& name, const std::string& data, const std::string& png, double floor) {
+  const std::string y = num(floor);
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
+     << "set grid\nset key top left\nset logscale y\nset datafile separator ','\nset datafile missing ''\n"
+     << "set xlabel " << gnuplot_quoted(name) << " noenhanced\nset ylabel 'certified {/Symbol g}'\n"
+     << "set title 'hinf-synth sweep: certified bound against " << name << "' noenhanced\n"
+     << "plot " << gnuplot_quoted(data)
+     << " every ::1 using 2:($4==0 ? $5 : 1/0) with linespoints pt 7 lc rgb '#d62728' title 'certified {/Symbol g}', "
+     << gnuplot_quoted(data)
+     << " every ::1 using 2:($4==0 && $6 > 0 ? $6 : 1/0) with points pt 6 lc rgb '#1f77b4' title 'verified lower bound', "
+     << gnuplot_quoted(data)
+     << " every ::1 using 2:($4==3 ? " << y << " : 1/0) with points pt 2 ps 1.5 lc rgb '#000000' title 'infeasible (exit 3)', "
+     << gnuplot_quoted(data)
+     << " every ::1 using 2:($4!=0 && $4!=3 ? " << y << " : 1/0) with points pt 4 ps 1.5 lc rgb '#ff7f0e' title 'no verdict (exit 2 or 4)'\n"
+     << "set output\n";
+  return gp.str();
+}
+
+void write_plot(const std::string& name, const std::vector<synth::SweepPoint>& points, const std::string& csv,
+                const std::string& png, const std::string& config) {
+  double floor = 0;
+  for (const auto& p : points)
+    if (p.outcome == ErrorCode::Ok && (floor == 0 || p.gamma < floor)) floor = p.gamma;
+  AtomicFileSet outputs;
+  outputs.protect(config);
+  const std::string png_tmp = outputs.reserve(png);
+  AtomicFileSet scratch;  // never committed: removed on return
+  const std::string dir = std::filesystem::path(png).parent_path().string();
+  const auto beside = [&](const std::string& f) { return (std::filesystem::path(dir.empty() ? "." : dir) / f).string(); };
+  const std::string data = scratch.add(beside("sweep-plot.csv"), csv);
+  const std::string script = scratch.add(beside("sweep-plot.gp"), plot_script(name, data, png_tmp, floor > 0 ? floor : 1.0));
+  const int rc = run_gnuplot(script);
+  if (rc != 0 || !std::filesystem::exists(png_tmp) || std::filesystem::file_size(png_tmp) == 0)
+    throw Error(ErrorCode::InvalidInput, rc < 0 ? "--plot: cannot run gnuplot (is the gnuplot package installed?)"
+                                                : "--plot: gnuplot failed (exit status " + std::to_string(rc) + ")");
+  outputs.commit();
+}
+
+void print_points(const std::string& name, const std::vector<synth::SweepPoint>& points) {
+  for (const auto& p : points) {
+    std::cout << name << " = " << num(p.value) << ": ";
+    if (p.outcome == ErrorCode::Ok)
+      std::cout << "gamma = " << num(p.gamma) << " certified (" << p.form << " form)"
+                << (p.gap_certified ? ", gamma* >= " + num(p.gamma_lower) : std::string()) << "\n";
+    else
+      std::cout << outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
+  }
+}
+
+int run_sweep(const SweepArgs& a, const std::string& text) {
+  const auto [name, range] = name_and_range(a.param, "--param");
+  const std::vector<double> values = synth::parse_sweep_range(range, "--param");
+  const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
+  const std::vector<synth::SweepPoint> points = synth::sweep(parameter, values, text, a.config);
+  print_points(name, points);
+  const std::string csv = sweep_csv(name, points);
+  if (!a.csv.empty()) write_file_atomic(a.csv, csv, {a.config});
+  if (!a.json.empty()) {
+    Json j = Json::object();
+    j["config"] = a.config;
+    j["parameter"] = name;
+    j["points"] = Json::array();
+    for (const auto& p : points) j["points"].push_back(point_json(p));
+    write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
+  }
+  if (!a.plot.empty()) write_plot(name, points, csv, a.plot, a.config);
+  return 0;
+}
+
+int run_max_feasible(const SweepArgs& a, const std::string& text) {
+  const auto [name, range] = name_and_range(a.max_feasible, "--max-feasible");
+  const std::size_t colon = range.find(':');
+  if (colon == std::string::npos || range.find(':', colon + 1) != std::string::npos)
+    throw Error(ErrorCode::InvalidInput, "--max-feasible '" + a.max_feasible + "': expected NAME=LO:HI", "--max-feasible");
+  const double lo = synth::parse_sweep_range(range.substr(0, colon), "--max-feasible").front();
+  const double hi = synth::parse_sweep_range(range.substr(colon + 1), "--max-feasible").front();
+  const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
+  const synth::FeasibilitySearch s = synth::max_feasible(parameter, lo, hi, a.tolerance, text, a.config);
+  print_points(name, s.evaluated);
+  const synth::SweepPoint& best = s.largest_certified;
+  std::cout << "largest certified " << name << " = " << num(best.value) << " (gamma = " << num(best.gamma) << ")";
+  if (!s.bracketed) std::cout << ": the upper end of the range; the boundary, if any, lies above it\n";
+  else {
+    const synth::SweepPoint& up = *s.smallest_not_certified;
+    std::cout << "; no certified filter at " << num(up.value) << " (" << outcome_word(up.outcome)
+              << "): bracket width " << num(s.width) << "\n";
+    if (!s.smallest_infeasible)
+      std::cout << "no point was verified infeasible: above " << num(best.value)
+                << " the solver failed numerically, which is not a proof that no filter exists\n";
+    else if (s.smallest_infeasible->value == up.value)
+      std::cout << "verified infeasible at " << num(up.value) << ": the boundary lies in [" << num(best.value)
+                << ", " << num(up.value) << "]\n";
+    else
+      std::cout << "verified infeasible from " << num(s.smallest_infeasible->value) << ": the boundary lies in ["
+                << num(best.value) << ", " << num(s.smallest_infeasible->value) << "]; between " << num(up.value)
+                << " and " << num(s.smallest_infeasible->value)
+                << " the solver failed numerically (no verdict: neither a filter nor a proof that none exists)\n";
+  }
+  if (!a.json.empty()) {
+    Json j = Json::object();
+    j["config"] = a.config;
+    j["parameter"] = name;
+    j["largest_certified"] = point_json(best);
+    j["smallest_not_certified"] = s.smallest_not_certified ? point_json(*s.smallest_not_certified) : Json(nullptr);
+    j["smallest_infeasible"] = s.smallest_infeasible ? point_json(*s.smallest_infeasible) : Json(nullptr);
+    j["bracket_width"] = s.bracketed ? Json(s.width) : Json(nullptr);
+    j["evaluated"] = Json::array();
+    for (const auto& p : s.evaluated) j["evaluated"].push_back(point_json(p));
+    write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
+  }
+  if (!a.csv.empty()) write_file_atomic(a.csv, sweep_csv(name, s.evaluated), {a.config});
+  return 0;
+}
+
+}  // namespace
+
+void add_sweep(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand(
+      "sweep", "certified gamma against one number of the config (--param), or the largest value of it with a "
+               "certified filter, by bisection (--max-feasible); every point is a full solve with its certificate");
+  auto a = std::make_shared<SweepArgs>();
+  cmd->add_option("config", a->config, "config YAML")->required();
+  auto* param = cmd->add_option("--param", a->param,
+                                "NAME=LO:STEP:HI: NAME is delta_bar (hill.delta_bar), uncertainty_scale (E multiplied "
+                                "by the value) or a key path of the config holding a number, e.g. hill.sample_time");
+  auto* maxf = cmd->add_option("--max-feasible", a->max_feasible, "NAME=LO:HI: the largest certified value in [LO, HI]");
+  param->excludes(maxf);
+  cmd->add_option("--tolerance", a->tolerance, "--max-feasible: width of the final bracket (default 1e-3)");
+  cmd->add_option("-o,--output", a->csv, "CSV of every point (parameter, value, outcome, exit_code, gamma, ...)");
+  cmd->add_option("--json", a->json, "the same as JSON");
+  cmd->add_option("--plot", a->plot, "PNG of gamma against the parameter (--param; gnuplot)");
+  cmd->callback([a, &action] {
+    action = [a]() -> int {
+      if (a->param.empty() == a->max_feasible.empty())
+        throw Error(ErrorCode::InvalidInput, "sweep: give exactly one of --param NAME=LO:STEP:HI or --max-feasible NAME=LO:HI");
+      if (!a->plot.empty() && a->param.empty())
+        throw Error(ErrorCode::InvalidInput, "--plot is for --param sweeps");
+      const std::string text = read_input_file(a->config, "config", kMaxConfigBytes);
+      return a->param.empty() ? run_max_feasible(*a, text) : run_sweep(*a, text);
+    };
+  });
+}
+
+}  // namespace hinf::cli
