@@ -31,6 +31,23 @@ class BlockMatrix {
 };
 }  // namespace
 
+MultiplierTerms multiplier_terms(const hinf::Plant& P, const Eigen::VectorXd& lambda) {
+  MultiplierTerms t{MatrixXd::Zero(P.n(), P.n()), MatrixXd::Zero(P.j(), P.j())};
+  if (!P.structured()) {
+    t.EtLE = lambda(0) * P.E.transpose() * P.E;
+    t.Lambda.diagonal().setConstant(lambda(0));
+    return t;
+  }
+  Eigen::Index b = 0;
+  for (const auto& [at, size] : P.F_block_ranges()) {
+    const MatrixXd Eb = P.E.middleRows(at, size);
+    t.EtLE += lambda(b) * Eb.transpose() * Eb;
+    t.Lambda.diagonal().segment(at, size).setConstant(lambda(b));
+    ++b;
+  }
+  return t;
+}
+
 MatrixXd theorem1_matrix(const hinf::Plant& P, const Theorem1Point& x) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
@@ -49,7 +66,8 @@ MatrixXd theorem1_matrix(const hinf::Plant& P, const Theorem1Point& x) {
   M.set(1, 3, x.AF_bar);
   M.set(1, 4, x.S * P.B);
   M.set(1, 5, x.BF_bar * P.D);
-  M.set(2, 2, -x.R + (unc ? MatrixXd(x.lambda * P.E.transpose() * P.E) : MatrixXd::Zero(n, n)));
+  const MultiplierTerms mt = unc ? multiplier_terms(P, x.lambda) : MultiplierTerms{MatrixXd::Zero(n, n), MatrixXd()};
+  M.set(2, 2, -x.R + mt.EtLE);
   M.set(2, 3, -x.S);
   M.set(2, 6, P.L.transpose());
   M.set(3, 3, -x.S);
@@ -60,7 +78,7 @@ MatrixXd theorem1_matrix(const hinf::Plant& P, const Theorem1Point& x) {
   if (unc) {
     M.set(0, 7, x.R * P.H);
     M.set(1, 7, x.S * P.H);
-    M.set(7, 7, -x.lambda * MatrixXd::Identity(P.j(), P.j()));
+    M.set(7, 7, -mt.Lambda);
   }
   return M.matrix();
 }
@@ -76,14 +94,15 @@ MatrixXd observer_lmi_matrix(const hinf::Plant& P, const ObserverPoint& x) {
   M.set(0, 1, x.P * P.A - x.Y * P.C);
   M.set(0, 2, x.P * P.B);
   M.set(0, 3, -x.Y * P.D);
-  M.set(1, 1, -x.P + (unc ? MatrixXd(x.lambda * P.E.transpose() * P.E) : MatrixXd::Zero(n, n)));
+  const MultiplierTerms mt = unc ? multiplier_terms(P, x.lambda) : MultiplierTerms{MatrixXd::Zero(n, n), MatrixXd()};
+  M.set(1, 1, -x.P + mt.EtLE);
   M.set(1, 4, P.L.transpose());
   M.set(2, 2, -x.g * MatrixXd::Identity(p, p));
   M.set(3, 3, -x.g * MatrixXd::Identity(q, q));
   M.set(4, 4, -MatrixXd::Identity(l, l));
   if (unc) {
     M.set(0, 5, x.P * P.H);
-    M.set(5, 5, -x.lambda * MatrixXd::Identity(P.j(), P.j()));
+    M.set(5, 5, -mt.Lambda);
   }
   return M.matrix();
 }

@@ -315,12 +315,29 @@ Eigen::VectorXd YamlReader::vector(const YAML::Node& node, const std::string& pa
 
 Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& path,
                                    MatrixForms forms) const {
+  return matrix(
+      node, path,
+      [this](const YAML::Node& entry, const std::string& entry_path, Eigen::Index, Eigen::Index) {
+        return finite_number(entry, entry_path);
+      },
+      forms);
+}
+
+Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& path, const EntryReader& entry,
+                                   MatrixForms forms) const {
   if (node.IsMap() && forms == MatrixForms::RowsOrDiag) {
     check_map(node, path, {"diag"});
     const YAML::Node diag = node["diag"];
-    if (!diag) fail(node, path + ": missing key '" + child_path(path, "diag") + "'");
-    return vector(diag, child_path(path, "diag")).asDiagonal();  // n ≤ kMaxMatrixDimension
-
+    const std::string diag_path = child_path(path, "diag");
+    if (!diag) fail(node, path + ": missing key '" + diag_path + "'");
+    if (!diag.IsSequence()) fail(diag, diag_path + ": expected a list of numbers, got " + node_kind(diag));
+    if (diag.size() == 0) fail(diag, diag_path + ": empty list; expected a list of numbers");
+    require_dimension(diag, diag_path, "entries", diag.size());
+    const auto n = static_cast<Eigen::Index>(diag.size());
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      M(i, i) = entry(diag[static_cast<size_t>(i)], diag_path + " entry " + std::to_string(i + 1), i, i);
+    return M;
   }
   if (!node.IsSequence())
     fail(node, path + (forms == MatrixForms::RowsOrDiag
@@ -347,8 +364,8 @@ Eigen::MatrixXd YamlReader::matrix(const YAML::Node& node, const std::string& pa
   Eigen::MatrixXd M(rows, cols);
   for (size_t i = 0; i < rows; ++i)
     for (size_t j = 0; j < cols; ++j)
-      M(i, j) = finite_number(node[i][j], path + " entry (" + std::to_string(i + 1) + ", " +
-                                              std::to_string(j + 1) + ")");
+      M(i, j) = entry(node[i][j], path + " entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")",
+                      static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
   return M;
 }
 

@@ -19,7 +19,7 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
   auto& M = O.lmi;  // M(x), docs/maths.md (124)
   O.P = M.add_symmetric("P", n);
   O.Y = M.add_full("Y", n, m);
-  if (unc) O.lambda = M.add_scalar("lambda");
+  if (unc) O.lambda = declare_multipliers(M, P);
   if (!g_fixed) O.g = M.add_scalar("gamma_squared");
   else O.margin = M.add_scalar("margin");
 
@@ -33,7 +33,7 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
   if (unc) M.add_term(0, 5, O.P, In, P.H);
   // row 2:  [ ∗  −P + λEᵀE  0  0  Lᵀ  0 ]
   M.add_term(1, 1, O.P, -In, In);
-  if (unc) M.add_scalar_term(1, 1, O.lambda, P.E.transpose() * P.E);
+  if (unc) add_multiplier_EtE(M, P, O.lambda, P.E, 1);
   M.add_constant(1, 4, P.L.transpose());
   // rows 3–6: −gI, −gI, −I, −λI
   if (g_fixed) {
@@ -46,7 +46,7 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
     M.add_scalar_term(3, 3, O.g, -MatrixXd::Identity(q, q));
   }
   M.add_constant(4, 4, -MatrixXd::Identity(l, l));
-  if (unc) M.add_scalar_term(5, 5, O.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  if (unc) add_multiplier_identity(M, P, O.lambda, 5);
   return O;
 }
 }  // namespace
@@ -64,7 +64,7 @@ certify::ObserverPoint observer_point(const ObserverLmi& O, const Plant& plant, 
   certify::ObserverPoint pt;
   pt.P = O.lmi.value(O.P, x);
   pt.Y = O.lmi.value(O.Y, x);
-  pt.lambda = plant.uncertain() ? x(O.lmi.variable(O.lambda).offset) : 0.0;
+  pt.lambda = multiplier_values(O.lmi, O.lambda, x);
   pt.g = g;
   return pt;
 }

@@ -10,7 +10,8 @@ namespace hinf::synth {
 
 struct ObserverLmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
-  lmi::VarId P, Y, lambda, g;  // lambda invalid without uncertainty
+  lmi::VarId P, Y, g;
+  std::vector<lmi::VarId> lambda;  // one per block of F (docs/maths.md §23); none without uncertainty
   lmi::VarId margin;           // only in the γ back-off problem (g fixed)
 };
 

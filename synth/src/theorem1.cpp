@@ -26,13 +26,12 @@ Theorem1Lmi build(const Plant& P, const double* g_fixed) {
   T.AFbar = M.add_full("AF_bar", n, n);
   T.BFbar = M.add_full("BF_bar", n, m);
   T.CFbar = M.add_full("CF_bar", l, n);
-  if (unc) T.lambda = M.add_scalar("lambda");
+  if (unc) T.lambda = declare_multipliers(M, P);
   if (!g_fixed) T.g = M.add_scalar("gamma_squared");
   else T.margin = M.add_scalar("margin");
 
   const MatrixXd In = MatrixXd::Identity(n, n);
   const MatrixXd& Hs = P.H;
-  const MatrixXd& Es = P.E;
   // row 1:  [ −R  −S  RA+B̄_F C  Ā_F  RB  B̄_F D  0  RH ]
   M.add_term(0, 0, T.R, -In, In);
   M.add_term(0, 1, T.S, -In, In);
@@ -52,7 +51,7 @@ Theorem1Lmi build(const Plant& P, const double* g_fixed) {
   if (unc) M.add_term(1, 7, T.S, In, Hs);
   // row 3:  [ ∗  ∗  −R+λEᵀE  −S  0  0  Lᵀ  0 ]
   M.add_term(2, 2, T.R, -In, In);
-  if (unc) M.add_scalar_term(2, 2, T.lambda, Es.transpose() * Es);
+  if (unc) add_multiplier_EtE(M, P, T.lambda, P.E, 2);
   M.add_term(2, 3, T.S, -In, In);
   M.add_constant(2, 6, P.L.transpose());
   // row 4:  [ ∗  ∗  ∗  −S  0  0  −C̄_Fᵀ  0 ]
@@ -69,7 +68,7 @@ Theorem1Lmi build(const Plant& P, const double* g_fixed) {
     M.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
   }
   M.add_constant(6, 6, -MatrixXd::Identity(l, l));
-  if (unc) M.add_scalar_term(7, 7, T.lambda, -MatrixXd::Identity(P.j(), P.j()));
+  if (unc) add_multiplier_identity(M, P, T.lambda, 7);
   return T;
 }
 }  // namespace
@@ -78,15 +77,62 @@ Theorem1Lmi build_theorem1(const Plant& P) { return build(P, nullptr); }
 
 Theorem1Lmi build_theorem1_backoff(const Plant& P, double g_fixed) { return build(P, &g_fixed); }
 
-std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi, lmi::VarId lambda, int block,
+std::vector<lmi::VarId> declare_multipliers(lmi::LmiProblem& M, const Plant& P) {
+  if (!P.structured()) return {M.add_scalar("lambda")};
+  std::vector<lmi::VarId> lambda;
+  for (std::size_t b = 0; b < P.F_blocks.size(); ++b) lambda.push_back(M.add_scalar("lambda_" + std::to_string(b + 1)));
+  return lambda;
+}
+
+void add_multiplier_EtE(lmi::LmiProblem& M, const Plant& P, const std::vector<lmi::VarId>& lambda, const MatrixXd& E,
+                        int e_block) {
+  if (!P.structured()) {
+    M.add_scalar_term(e_block, e_block, lambda[0], E.transpose() * E);
+    return;
+  }
+  std::size_t b = 0;
+  for (const auto& [at, size] : P.F_block_ranges()) {
+    const MatrixXd Eb = E.middleRows(at, size);
+    M.add_scalar_term(e_block, e_block, lambda[b++], Eb.transpose() * Eb);
+  }
+}
+
+void add_multiplier_identity(lmi::LmiProblem& M, const Plant& P, const std::vector<lmi::VarId>& lambda, int h_block) {
+  if (!P.structured()) {
+    M.add_scalar_term(h_block, h_block, lambda[0], -MatrixXd::Identity(P.j(), P.j()));
+    return;
+  }
+  std::size_t b = 0;
+  for (const auto& [at, size] : P.F_block_ranges()) {
+    MatrixXd I = MatrixXd::Zero(P.j(), P.j());
+    I.diagonal().segment(at, size).setConstant(-1.0);
+    M.add_scalar_term(h_block, h_block, lambda[b++], I);
+  }
+}
+
+Eigen::VectorXd multiplier_values(const lmi::LmiProblem& M, const std::vector<lmi::VarId>& lambda,
+                                  const Eigen::VectorXd& x) {
+  Eigen::VectorXd v(static_cast<Eigen::Index>(lambda.size()));
+  for (std::size_t b = 0; b < lambda.size(); ++b) v(static_cast<Eigen::Index>(b)) = x(M.variable(lambda[b]).offset);
+  return v;
+}
+
+std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi,
+                                                     const std::vector<lmi::VarId>& lambda, int block,
                                                      const Plant& plant) {
   std::vector<lmi::SparseEntry> err;
-  const double u = std::numeric_limits<double>::epsilon() / 2, k = plant.k() + 1;
-  const MatrixXd bound = k * u / (1 - k * u) * (1 + 4 * u) * (plant.E.cwiseAbs().transpose() * plant.E.cwiseAbs());
-  const int param = lmi.variable(lambda).offset, off = lmi.block_offset(block);
-  for (int c = 0; c < plant.n(); ++c)
-    for (int r = 0; r <= c; ++r)
-      if (bound(r, c) > 0) err.push_back({param, off + r, off + c, bound(r, c)});
+  const double u = std::numeric_limits<double>::epsilon() / 2;
+  const auto ranges = plant.structured() ? plant.F_block_ranges()
+                                         : std::vector<std::pair<int, int>>{{0, plant.k()}};
+  for (std::size_t b = 0; b < lambda.size(); ++b) {
+    const MatrixXd Eb = plant.E.middleRows(ranges[b].first, ranges[b].second).cwiseAbs();
+    const double k = ranges[b].second + 1;
+    const MatrixXd bound = k * u / (1 - k * u) * (1 + 4 * u) * (Eb.transpose() * Eb);
+    const int param = lmi.variable(lambda[b]).offset, off = lmi.block_offset(block);
+    for (int c = 0; c < plant.n(); ++c)
+      for (int r = 0; r <= c; ++r)
+        if (bound(r, c) > 0) err.push_back({param, off + r, off + c, bound(r, c)});
+  }
   return err;
 }
 
@@ -103,7 +149,7 @@ certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, 
   pt.AF_bar = T.lmi.value(T.AFbar, x);
   pt.BF_bar = T.lmi.value(T.BFbar, x);
   pt.CF_bar = T.lmi.value(T.CFbar, x);
-  pt.lambda = plant.uncertain() ? x(T.lmi.variable(T.lambda).offset) : 0.0;
+  pt.lambda = multiplier_values(T.lmi, T.lambda, x);
   pt.g = g;
   return pt;
 }
@@ -133,7 +179,7 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   A.lmi = lmi::LmiProblem(blocks);
   auto& M = A.lmi;  // M(x), docs/maths.md (50)
   A.P = M.add_symmetric("P", n2);
-  if (unc) A.lambda = M.add_scalar("lambda");
+  if (unc) A.lambda = declare_multipliers(M, P);
   A.g = M.add_scalar("gamma_squared");
   const MatrixXd I2 = MatrixXd::Identity(n2, n2);
   M.add_term(0, 0, A.P, -I2, I2);
@@ -149,8 +195,8 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
     MatrixXd Eb = MatrixXd::Zero(P.k(), n2);
     Eb.leftCols(n) = P.E;
     M.add_term(0, 4, A.P, I2, Hb);
-    M.add_scalar_term(1, 1, A.lambda, Eb.transpose() * Eb);
-    M.add_scalar_term(4, 4, A.lambda, -MatrixXd::Identity(P.j(), P.j()));
+    add_multiplier_EtE(M, P, A.lambda, Eb, 1);
+    add_multiplier_identity(M, P, A.lambda, 4);
   }
   return A;
 }

@@ -10,7 +10,8 @@ namespace hinf::synth {
 
 struct Theorem1Lmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
-  lmi::VarId R, S, AFbar, BFbar, CFbar, lambda, g;  // lambda invalid without uncertainty
+  lmi::VarId R, S, AFbar, BFbar, CFbar, g;
+  std::vector<lmi::VarId> lambda;  // one per block of F (docs/maths.md §23); none without uncertainty
   lmi::VarId margin;  // only in the γ back-off problem (g fixed): M(x) ⪯ margin·I
 };
 
@@ -25,9 +26,25 @@ Theorem1Lmi build_theorem1_backoff(const hinf::Plant& plant, double g_fixed);
 // Entrywise bounds on |Mᵢ − M̂ᵢ| between LMI (18) and the stored one: only λ's EᵀE (block
 // (3,3)) is a rounded product, |fl(EᵀE) − EᵀE| ≤ γ_k|E|ᵀ|E|; for sdp::verified_bracket.
 std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const hinf::Plant& plant);
-// The same bound for any LMI whose diagonal block `block` holds λ·EᵀE (Theorem 1, (50), (124)).
-std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi, lmi::VarId lambda, int block,
+// The same bound for any LMI whose diagonal block `block` holds Σ_b λ_b E_bᵀE_b in its
+// leading n×n (Theorem 1, (50), (124)).
+std::vector<lmi::SparseEntry> rounded_EtE_basis_error(const lmi::LmiProblem& lmi,
+                                                     const std::vector<lmi::VarId>& lambda, int block,
                                                      const hinf::Plant& plant);
+
+// One multiplier per block of F (docs/maths.md (18), §23), declared once (named "lambda"
+// for one block, "lambda_1", "lambda_2", … otherwise); then λ_b·E_bᵀE_b added to the
+// diagonal block `e_block` (E is the k×(its size) matrix there: E, or Ē = [E, 0]) and
+// −λ_b·I on the block's rows of the diagonal block `h_block` (size j), each where the LMI
+// writes it.
+std::vector<lmi::VarId> declare_multipliers(lmi::LmiProblem& M, const hinf::Plant& plant);
+void add_multiplier_EtE(lmi::LmiProblem& M, const hinf::Plant& plant, const std::vector<lmi::VarId>& lambda,
+                        const Eigen::MatrixXd& E, int e_block);
+void add_multiplier_identity(lmi::LmiProblem& M, const hinf::Plant& plant, const std::vector<lmi::VarId>& lambda,
+                             int h_block);
+// The multipliers' values at x.
+Eigen::VectorXd multiplier_values(const lmi::LmiProblem& M, const std::vector<lmi::VarId>& lambda,
+                                  const Eigen::VectorXd& x);
 
 // The Theorem-1 variables at a solution x of T's LMI, with g = γ² (fixed in the back-off
 // problem, the objective otherwise).
@@ -40,7 +57,8 @@ hinf::Filter recover_filter(const certify::Theorem1Point& pt);
 
 struct AnalysisLmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
-  lmi::VarId P, lambda, g;
+  lmi::VarId P, g;
+  std::vector<lmi::VarId> lambda;
 };
 
 // Blocks 2n, 2n, p+q, l, j (docs/maths.md (50)):

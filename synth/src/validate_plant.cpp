@@ -88,6 +88,17 @@ void validate_plant(const Plant& plant) {
   }
 
   if (plant.G.size() > 0) require_rows(plant.G, "G", n, "n from A");
+  if (!plant.F_blocks.empty()) {
+    long total = 0;
+    for (int b : plant.F_blocks) {
+      if (b <= 0) fail("F_blocks", ": a block size " + std::to_string(b) + " is not positive");
+      total += b;
+    }
+    if (!has_H || total != plant.H.cols() || total != plant.E.rows())
+      fail("F_blocks", ": the block sizes add up to " + std::to_string(total) + ", but F is " +
+                           std::to_string(plant.E.rows()) + "x" + std::to_string(plant.H.cols()) +
+                           " (rows of E x columns of H); the blocks are square and cover F");
+  }
 
   require_finite(A, "A");
   require_finite(plant.B, "B");

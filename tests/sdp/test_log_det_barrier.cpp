@@ -205,8 +205,7 @@ TEST(LmiLayer, Theorem1EvaluateMatchesDenseSpec20) {
       pt.CF_bar = T.lmi.value(T.CFbar, x);
       EXPECT_LT(relative_error(pt.R, pt.R.transpose()), 1e-15);
       pt.g = T.lmi.value(T.g, x)(0, 0);
-      const double lambda_prime = unc ? T.lmi.value(T.lambda, x)(0, 0) : 0.0;
-      pt.lambda = lambda_prime / (s * s);
+      if (unc) pt.lambda = VectorXd::Constant(1, T.lmi.value(T.lambda[0], x)(0, 0) / (s * s));
       const MatrixXd Md = hinf::certify::theorem1_matrix(P, pt);
       const int N = T.lmi.order();
       ASSERT_EQ(Md.rows(), N);

@@ -67,7 +67,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   const YAML::Node root =
       reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
-  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter"});
+  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter", "constants", "parameters"});
 
   const YAML::Node system = root["system"];
   const YAML::Node hill = root["hill"];
@@ -80,9 +80,19 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
     reader.fail(uncertainty, "'uncertainty' is only allowed with 'system'; with 'hill' the "
                              "uncertainty comes from hill.delta_bar (docs/maths.md §9.4)");
 
+  const YAML::Node constants = root["constants"];
+  const YAML::Node parameters = root["parameters"];
+  if (hill && (constants || parameters))
+    reader.fail(constants ? constants : parameters,
+                "'constants' and 'parameters' are only allowed with 'system' (the hill model has hill.delta_bar)");
+  if (uncertainty && parameters)
+    reader.fail(uncertainty, "the config has both 'uncertainty' (H, E) and 'parameters'; give one: with "
+                             "'parameters' the tool builds H and E from system.A (docs/maths.md §22)");
+
   try {
     if (system) {
-      config.plant = read_system_section(reader, system, uncertainty, config.sampling);
+      const ParameterModel model = read_parameter_sections(reader, constants, parameters);
+      config.plant = read_system_section(reader, system, uncertainty, config.sampling, model);
       located(reader, root, system_key, [&] { validate_plant(config.plant); });
       if (config.sampling)
         located(reader, root, system_key, [&] { config.plant = sample_plant(config.plant, *config.sampling); });

@@ -7,6 +7,8 @@
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/sampled_plant.hpp"
 #include "hinf/synth/settings.hpp"
+#include "hinf/synth/parametric_uncertainty.hpp"
+#include "config/affine_expression.hpp"
 #include <optional>
 
 namespace hinf::synth {
@@ -15,8 +17,22 @@ namespace hinf::synth {
 // an undefined node. Entries are checked here; shapes by validate_plant (the caller).
 // With `sample_time` the matrices are continuous-time and `sampling` is set (the caller
 // samples them after validate_plant, docs/maths.md §19).
+// With named parameters (`model` not empty) the entries of A may be affine expressions of
+// them and of the constants, the other matrices' entries expressions of the constants; H and
+// E are then built from A's parameter coefficients (docs/maths.md §22), and `uncertainty`
+// must be undefined.
+struct ParameterModel {
+  ExpressionSymbols symbols;
+  std::vector<UncertainParameter> parameters;
+};
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
-                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling);
+                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling,
+                          const ParameterModel& model);
+
+// `constants:` {name: number} and `parameters:` {name: {nominal, range: [low, high]}}; either
+// node may be undefined. Names are identifiers, each declared once.
+ParameterModel read_parameter_sections(const YamlReader& reader, const YAML::Node& constants,
+                                       const YAML::Node& parameters);
 
 // `hill:`; values and shapes are checked by validate_hill_model (the caller).
 HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill);

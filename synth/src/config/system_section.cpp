@@ -2,6 +2,9 @@
 // y = C x + D v, z = L x).
 #include "config/sections.hpp"
 
+#include "hinf/common/error.hpp"
+#include "hinf/common/number_text.hpp"
+
 namespace hinf::synth {
 namespace {
 
@@ -12,6 +15,40 @@ Eigen::MatrixXd required_matrix(const YamlReader& reader, const YAML::Node& sect
   const std::string path = child_path(section_name, key);
   if (!node) reader.fail(section, "missing key '" + path + "' (" + what + ")");
   return reader.matrix(node, path);
+}
+
+// A matrix of `system:` whose entries may be expressions (docs/maths.md §22): each scalar
+// is read as an affine expression (a number is one), whose parameter
+// coefficients are appended to `coefficients` (nullptr: no parameter may appear, as outside A).
+struct Coefficient {
+  std::size_t parameter;
+  Eigen::Index row, col;
+  double value;
+};
+Eigen::MatrixXd expression_matrix(const YamlReader& reader, const YAML::Node& node, const std::string& path,
+                                  const ParameterModel& model, std::vector<Coefficient>* coefficients) {
+  const auto entry = [&](const YAML::Node& e, const std::string& entry_path, Eigen::Index r, Eigen::Index c) {
+    if (!e.IsScalar()) return reader.finite_number(e, entry_path);  // names what it is instead
+    AffineForm f;
+    try {
+      f = parse_affine_expression(e.Scalar(), model.symbols);
+    } catch (const Error& err) {
+      reader.fail(e, entry_path + ": " + err.what());
+    }
+    for (Eigen::Index i = 0; i < f.coefficients.size(); ++i) {
+      if (f.coefficients(i) == 0) continue;
+      if (!coefficients)
+        reader.fail(e, entry_path + ": the parameter '" + model.parameters[static_cast<std::size_t>(i)].name +
+                           "' may enter system.A only (the uncertainty is Delta A = H F E, docs/maths.md §22)");
+      coefficients->push_back({static_cast<std::size_t>(i), r, c, f.coefficients(i)});
+    }
+    // A(ν): the nominal plant (docs/maths.md (136))
+    double value = f.constant;
+    for (Eigen::Index i = 0; i < f.coefficients.size(); ++i)
+      value += f.coefficients(i) * model.parameters[static_cast<std::size_t>(i)].nominal;
+    return value;
+  };
+  return reader.matrix(node, path, entry);
 }
 
 // sample_time, discretisation, process_noise: the plant is continuous-time (docs/maths.md §19).
@@ -34,13 +71,39 @@ std::optional<SamplingSpec> read_sampling(const YamlReader& reader, const YAML::
   return spec;
 }
 
+// `system:` with constants and parameters: H, E from A's parameter coefficients.
+Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system, const ParameterModel& model) {
+  const auto required = [&](const char* key, const char* what) {
+    if (!system[key]) reader.fail(system, std::string("missing key 'system.") + key + "' (" + what + ")");
+    return system[key];
+  };
+  std::vector<Coefficient> entries;
+  Plant plant;
+  plant.A = expression_matrix(reader, required("A", "n x n state matrix"), "system.A", model, &entries);
+  plant.B = expression_matrix(reader, required("B", "n x p process-noise input"), "system.B", model, nullptr);
+  plant.C = expression_matrix(reader, required("C", "m x n measurement matrix"), "system.C", model, nullptr);
+  plant.D = expression_matrix(reader, required("D", "m x q measurement-noise input"), "system.D", model, nullptr);
+  plant.L = expression_matrix(reader, required("L", "l x n estimated signal"), "system.L", model, nullptr);
+  plant.G = system["G"] ? expression_matrix(reader, system["G"], "system.G", model, nullptr)
+                        : Eigen::MatrixXd::Zero(plant.A.rows(), 0);
+  std::vector<Eigen::MatrixXd> coefficients(model.parameters.size(),  // the shape of A (validate_plant: n×n)
+                                            Eigen::MatrixXd::Zero(plant.A.rows(), plant.A.cols()));
+  for (const Coefficient& e : entries) coefficients[e.parameter](e.row, e.col) = e.value;
+  const UncertaintyFactors f = uncertainty_from_parameters(coefficients, model.parameters, plant.A.rows());
+  plant.H = f.H;
+  plant.E = f.E;
+  return plant;
+}
+
 }  // namespace
 
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
-                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling) {
+                          const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling,
+                          const ParameterModel& model) {
   reader.check_map(system, "system",
                    {"A", "B", "C", "D", "L", "G", "sample_time", "discretisation", "process_noise"});
   sampling = read_sampling(reader, system);
+  if (!model.symbols.empty()) return read_parametric_system(reader, system, model);
   Plant plant;
   plant.A = required_matrix(reader, system, "system", "A", "n x n state matrix");
   plant.B = required_matrix(reader, system, "system", "B", "n x p process-noise input");

@@ -10,8 +10,8 @@ namespace hinf::certify {
 
 struct Theorem1Point {
   Eigen::MatrixXd R, S, AF_bar, BF_bar, CF_bar;
-  double lambda = 0;  // unused without uncertainty
-  double g = 0;       // γ²
+  Eigen::VectorXd lambda;  // one multiplier per block of F (docs/maths.md §23); empty without uncertainty
+  double g = 0;            // γ²
 };
 
 // LMI (18) of docs/maths.md at a point (blocks n, n, n, n, p, q, l[, j]).
@@ -19,9 +19,9 @@ Eigen::MatrixXd theorem1_matrix(const hinf::Plant& plant, const Theorem1Point& x
 
 // The observer-form LMI (124) of docs/maths.md at a point (blocks n, n, p, q, l[, j]).
 struct ObserverPoint {
-  Eigen::MatrixXd P, Y;  // Y = P K
-  double lambda = 0;     // unused without uncertainty
-  double g = 0;          // γ²
+  Eigen::MatrixXd P, Y;    // Y = P K
+  Eigen::VectorXd lambda;  // one multiplier per block of F; empty without uncertainty
+  double g = 0;            // γ²
 };
 Eigen::MatrixXd observer_lmi_matrix(const hinf::Plant& plant, const ObserverPoint& x);
 
@@ -31,6 +31,13 @@ struct DefinitenessCheck {
   // Cholesky of −M − margin·I, Jacobi-scaled (a congruence: same inertia), succeeded
   bool negative_definite = false;
 };
+// The multiplier terms of (18), (50), (124) for one multiplier per block of F (§23):
+// EᵀΛE = Σ_b λ_b E_bᵀE_b (n×n) and Λ = diag(λ_b I) (j×j). Not structured: λ₀EᵀE, λ₀I.
+struct MultiplierTerms {
+  Eigen::MatrixXd EtLE, Lambda;
+};
+MultiplierTerms multiplier_terms(const hinf::Plant& plant, const Eigen::VectorXd& lambda);
+
 DefinitenessCheck check_negative_definite(const Eigen::MatrixXd& M, double margin);
 
 }  // namespace hinf::certify

@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,6 +83,13 @@ class YamlReader {
   // Nested row lists [[a, b], [c, d]] or (RowsOrDiag) {diag: [a, b]}; non-empty,
   // rectangular, every entry a finite number. Messages give 1-based (row, column).
   Eigen::MatrixXd matrix(const YAML::Node& node, const std::string& path,
+                         MatrixForms forms = MatrixForms::RowsOrDiag) const;
+  // A matrix entry read by the caller's rule instead of as a finite number (an expression
+  // of named parameters, say): called with the entry's node, its path ("<path> entry (2, 1)",
+  // "<path>.diag entry 2") and its 0-based row and column.
+  using EntryReader = std::function<double(const YAML::Node& entry, const std::string& entry_path,
+                                           Eigen::Index row, Eigen::Index col)>;
+  Eigen::MatrixXd matrix(const YAML::Node& node, const std::string& path, const EntryReader& entry,
                          MatrixForms forms = MatrixForms::RowsOrDiag) const;
   // matrix() of exactly rows x cols: "<path>: expected a 3x6 matrix, got 2x6".
   Eigen::MatrixXd matrix(const YAML::Node& node, const std::string& path, Eigen::Index rows,

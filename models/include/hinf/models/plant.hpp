@@ -1,10 +1,11 @@
 // The uncertain discrete-time plant of docs/maths.md (1)–(4), with the known input of (120):
 //   x(k+1) = (A + H F(k) E) x(k) + G u(k) + B w(k),  y(k) = C x(k) + D v(k),  z(k) = L x(k),
-//   F(k)ᵀF(k) ≤ I.
+//   F(k)ᵀF(k) ≤ I (F block-diagonal when F_blocks says so).
 #pragma once
 #include <Eigen/Dense>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace hinf {
 
@@ -17,6 +18,9 @@ struct Plant {
   Eigen::MatrixXd H;  // n×j  (0 columns: no uncertainty)
   Eigen::MatrixXd E;  // k×n  (0 rows: no uncertainty)
   Eigen::MatrixXd G;  // n×r  known input u, which the filter receives too (0 columns: none)
+  // The sizes of F's square diagonal blocks, F = diag(F₁, …, F_K), each ‖F_b‖ ≤ 1, summing
+  // to j = k (docs/maths.md §23); empty: F is one full j×k block (4).
+  std::vector<int> F_blocks;
 
   int n() const { return static_cast<int>(A.rows()); }
   int p() const { return static_cast<int>(B.cols()); }
@@ -27,6 +31,16 @@ struct Plant {
   int k() const { return static_cast<int>(E.rows()); }
   int r() const { return static_cast<int>(G.cols()); }
   bool uncertain() const { return H.size() > 0 && E.size() > 0; }
+  // F has more than one diagonal block: one S-procedure multiplier per block (§23).
+  bool structured() const { return uncertain() && F_blocks.size() > 1; }
+  // The (first column of H / row of E, size) of each block of F; one block j×k if not structured.
+  std::vector<std::pair<int, int>> F_block_ranges() const {
+    std::vector<std::pair<int, int>> out;
+    if (!structured()) return {{0, j()}};
+    int at = 0;
+    for (int b : F_blocks) out.emplace_back(at, b), at += b;
+    return out;
+  }
 };
 
 // The two formulations of the full-order filter (docs/maths.md §2.2 and §18):
