@@ -27,6 +27,13 @@ constexpr int kSlopeSearchMaxNorms = 80;
 // A best norm in [1, 1 + kFringe) is recomputed to kFineNormTolerance.
 constexpr double kFringe = 1e-8;
 constexpr double kFineNormTolerance = 1e-13;
+// Block-diagonal F (docs/maths.md §23): each relative weight log w_b is searched by golden
+// section over ±kLogWeightHalfWidth around its current value in kWeightGoldenSteps
+// (0.618^40 · 2·20 ≈ 2e-7), in at most kMaxWeightSweeps sweeps over the blocks, stopping
+// when a sweep lowers log‖G‖∞ by less than kLogNormGap.
+constexpr double kLogWeightHalfWidth = 20.0;
+constexpr int kWeightGoldenSteps = 40;
+constexpr int kMaxWeightSweeps = 8;
 
 // Regula falsi with the Illinois modification (superlinear where bisection is linear)
 // for a root of f on [a, b] with f(a), f(b) of opposite signs (fa, fb given), until
@@ -69,15 +76,23 @@ ScaledBoundedReal::ScaledBoundedReal(const hinf::Plant& plant, const hinf::State
   C_ = MatrixXd::Zero(plant.l() + k, N);
   D_ = MatrixXd::Zero(plant.l() + k, pq_ + j);
   C_.topRows(plant.l()) = e_.C;
+  weights_ = Eigen::VectorXd::Ones(plant.structured() ? static_cast<Eigen::Index>(plant.F_blocks.size()) : 1);
 }
 
 hinf::certify::HinfNorm ScaledBoundedReal::scaled_hinf_norm(double gamma, double lambda, double norm_tolerance) {
   const int n = plant_.n();
   B_.leftCols(pq_) = e_.B / gamma;
-  if (plant_.uncertain()) {
+  if (plant_.uncertain() && !plant_.structured()) {
     const double r = std::sqrt(lambda);  // H̄/√λ and √λ Ē
     B_.block(0, pq_, n, plant_.j()) = plant_.H / r;
     C_.block(plant_.l(), 0, plant_.k(), n) = r * plant_.E;
+  } else if (plant_.uncertain()) {
+    Eigen::Index b = 0;
+    for (const auto& [at, size] : plant_.F_block_ranges()) {
+      const double r = std::sqrt(lambda * weights_(b++));  // block by block: H̄_b/√λ_b and √λ_b Ē_b
+      B_.block(0, pq_ + at, n, size) = plant_.H.middleCols(at, size) / r;
+      C_.block(plant_.l() + at, 0, size, n) = r * plant_.E.middleRows(at, size);
+    }
   }
   ++evaluations_;
   return hinf::certify::discrete_hinf_norm(e_.A, B_, C_, D_, norm_tolerance);
@@ -175,6 +190,40 @@ void ScaledBoundedReal::golden_section_search(double gamma, double d0, Best& bes
                                   kGoldenSteps, [&best](double, double) { return best.done(); });
 }
 
+void ScaledBoundedReal::search_common_multiplier(double gamma, double d0, Best& best) {
+  // 1. the slope search; 2. if it was not possible (a slope missing or of the wrong sign
+  // at the bracket's ends) or did not converge (the norm budget spent), golden section.
+  const bool located = slope_search(gamma, d0, best);
+  if (!(best.f < 1.0) && !located) golden_section_search(gamma, d0, best);
+}
+
+// ‖D G D⁻¹‖∞ is convex in the log-scalings (Sezginer & Overton 1990, the maximum over θ of
+// convex functions), so φ(log w_b) = min over λ of it, the others fixed, is convex too
+// (partial minimisation): each golden-section step minimises over λ inside. With two
+// blocks this is the joint minimum; with more, a cyclic search may stop short of it at a
+// kink, which can only make the check conservative, never wrong (every norm is certified).
+void ScaledBoundedReal::search_block_weights(double gamma, Best& best) {
+  for (int sweep = 0; sweep < kMaxWeightSweeps && !best.done(); ++sweep) {
+    const double before = best.f;
+    for (Eigen::Index b = 1; b < weights_.size() && !best.done(); ++b) {
+      const double w0 = std::log(weights_(b));
+      double best_w = w0;
+      auto phi = [&](double lw) {
+        weights_(b) = std::exp(lw);
+        Best inner;  // the minimum over λ, not only the verdict (its tangent bound ≥ 0 is not enough here)
+        inner.stop_when_feasible = false;
+        search_common_multiplier(gamma, best.d, inner);
+        if (inner.f < best.f) best.f = inner.f, best.d = inner.d, best_w = lw;
+        return inner.f;
+      };
+      detail::golden_section_minimise(phi, w0 - kLogWeightHalfWidth, w0 + kLogWeightHalfWidth, kWeightGoldenSteps,
+                                      [&best](double, double) { return best.done(); });
+      weights_(b) = std::exp(best_w);
+    }
+    if (!(std::log(before) - std::log(best.f) > kLogNormGap)) break;
+  }
+}
+
 ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
   const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
@@ -189,10 +238,16 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   // Bracket centred at the λ balancing the uncertainty loop's two gains ‖H̄‖/√λ ~ √λ‖Ē‖/γ.
   const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
-  // 1. the slope search; 2. if it was not possible (a slope missing or of the wrong sign
-  // at the bracket's ends) or did not converge (the norm budget spent), golden section.
-  const bool located = slope_search(gamma, d0, best);
-  if (!(best.f < 1.0) && !located) golden_section_search(gamma, d0, best);
+  weights_.setOnes();
+  if (!plant_.structured()) {
+    search_common_multiplier(gamma, d0, best);
+  } else {
+    Best common;  // located, not just decided: the weights' search starts from its λ
+    common.stop_when_feasible = false;
+    search_common_multiplier(gamma, d0, common);
+    best.record(common.d, common.f);
+    if (!best.done()) search_block_weights(gamma, best);
+  }
   // 3. Within the norms' accuracy of 1 the verdict depends on their rounding: decide it
   //    with one norm to 1e-13 at the best multiplier.
   if (!(best.f < 1.0) && best.f < 1.0 + kFringe) {
@@ -201,6 +256,7 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   }
   out.norm_evaluations = evaluations_ - evaluations_before;
   out.lambda = std::exp(best.d);
+  out.multipliers = out.lambda * weights_;
   out.scaled_norm = best.f;
   out.feasible = best.f < 1.0;
   return out;

@@ -47,6 +47,20 @@ void add_sample(const Plant& plant, const Filter& filter, const Eigen::MatrixXd&
   ++out.samples;
 }
 
+// F's admissible set when F is block-diagonal (docs/maths.md §23): F outside the blocks is
+// zeroed, and with `normalise` each nonzero block is scaled to ‖F_b‖₂ = 1.
+Eigen::MatrixXd on_blocks(const Plant& plant, const Eigen::MatrixXd& F, bool normalise) {
+  if (!plant.structured()) return F;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(F.rows(), F.cols());
+  for (const auto& [at, size] : plant.F_block_ranges()) {
+    Eigen::MatrixXd block = F.block(at, at, size, size);
+    const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues()(0);
+    if (normalise && norm > 0) block /= norm;
+    out.block(at, at, size, size) = block;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::complex<double> dominant_eigenvalue(const Eigen::MatrixXd& M) {
@@ -79,6 +93,7 @@ StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filte
     for (Eigen::Index b = 0; b < k; ++b) {
       Eigen::MatrixXd F = Eigen::MatrixXd::Zero(j, k);
       F(a, b) = 1.0;
+      if (on_blocks(plant, F, false)(a, b) == 0) continue;  // outside F's blocks: not admissible
       add_sample(plant, filter, F, out);
       add_sample(plant, filter, -F, out);
     }
@@ -88,6 +103,10 @@ StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filte
     Eigen::MatrixXd G(j, k);
     for (Eigen::Index c = 0; c < k; ++c)
       for (Eigen::Index r = 0; r < j; ++r) G(r, c) = gauss.next();
+    if (plant.structured()) {
+      add_sample(plant, filter, on_blocks(plant, G, true), out);  // each ‖F_b‖₂ = 1
+      continue;
+    }
     const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(0);
     if (norm > 0) add_sample(plant, filter, G / norm, out);  // ‖F‖₂ = 1
   }
@@ -105,6 +124,9 @@ StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filte
                     "sampled_robust_stability: F[" + std::to_string(i) + "] is " +
                         std::to_string(F.rows()) + "×" + std::to_string(F.cols()) + ", expected " +
                         std::to_string(plant.H.cols()) + "×" + std::to_string(plant.E.rows()));
+      if (on_blocks(plant, F, false) != F)
+        throw Error(ErrorCode::InvalidInput, "sampled_robust_stability: F[" + std::to_string(i) +
+                                                 "] is not block-diagonal as F's blocks are (not admissible)");
       const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(F).singularValues()(0);
       if (!(norm <= 1.0 + 1e-12)) {
         std::ostringstream msg;

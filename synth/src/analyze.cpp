@@ -45,6 +45,7 @@ FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantS
       pd.A = hill_exact_discrete_A(*hill, d.delta);  // the exact plant at this δ
       pd.H.resize(plant.n(), 0);
       pd.E.resize(0, plant.n());
+      pd.F_blocks.clear();
       const StateSpace esd = certify::error_system(pd, filter);
       d.spectral_radius = certify::spectral_radius(esd.A);
       d.hinf_norm = norm_or_inf(esd, d.spectral_radius);

@@ -51,6 +51,11 @@ void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form)
   kv(out, "robust_bound", c.robust_bound);  // check 4
   kv(out, "robust_feasible_at_gamma", c.robust_feasible_at_gamma);
   kv(out, "robust_multiplier", c.robust_multiplier);
+  if (c.robust_block_multipliers.size() > 0) {  // F block-diagonal: one per block (docs/maths.md §23)
+    out << YAML::Key << "robust_block_multipliers" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (Eigen::Index b = 0; b < c.robust_block_multipliers.size(); ++b) out << c.robust_block_multipliers(b);
+    out << YAML::EndSeq;
+  }
   kv(out, "robust_scaled_norm", c.robust_scaled_norm);
   if (form == FilterForm::Observer) {
     kv(out, "observer_mismatch", c.observer_mismatch);

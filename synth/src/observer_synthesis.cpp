@@ -88,8 +88,9 @@ SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, 
   const std::vector<lmi::SparseEntry> basis_error = observer_basis_error(O, plant);
   const sdp::Solution sol =
       solve_min_gamma(O.lmi, O.g, basis_error, settings, observer, "observer-form LMI",
-                      " (no gain K makes A + H F E − K C quadratically stable for every admissible F: reduce the "
-                      "uncertainty H, E)");
+                      plant.structured() ? structured_infeasible_hint()
+                                         : " (no gain K makes A + H F E − K C quadratically stable for every "
+                                           "admissible F: reduce the uncertainty H, E)");
   SynthesisResult res;
   res.solver = solver_info(sol, O.lmi, sc, settings);
   record_bracket(O.lmi, O.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);

@@ -91,6 +91,12 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
                    "conditioned");
 }
 
+std::string structured_infeasible_hint() {
+  return " (F is block-diagonal: this LMI, with one S-procedure multiplier per block, is a sufficient condition "
+         "only, so its infeasibility does not prove that no filter exists; one full block "
+         "(uncertainty_blocks: full) is more conservative still; reduce the parameters' ranges)";
+}
+
 // The retry of a numerically failed solve in wider balls ‖x‖ < ρ (docs/maths.md §4.3):
 // each retry multiplies the feasibility radius and phase I's by this factor, up to the
 // largest radius (beyond ~1e16 the ball's barrier term is lost in round-off of ‖x‖²).
@@ -180,6 +186,7 @@ Certificate certify_checks(const Plant& plant, const Filter& filter, double gamm
   const certify::ScaledBoundedRealTest br = robust.test(gamma);
   c.robust_feasible_at_gamma = br.feasible;
   c.robust_multiplier = br.lambda;
+  if (plant.structured()) c.robust_block_multipliers = br.multipliers;
   c.robust_scaled_norm = br.scaled_norm;
   // (to 1e-7 relative, rounded up: it is reported, not used)
   c.robust_bound = br.feasible ? robust.gamma_at_multiplier(br.lambda, hn.norm, gamma, 1e-7) : INFINITY;
@@ -222,6 +229,7 @@ Certificate in_user_units(Certificate c, const PlantScaling& s, const Filter& us
   c.h2_norm_nominal /= f;
   c.robust_bound /= f;
   c.robust_multiplier /= ls * ls;
+  c.robust_block_multipliers /= ls * ls;
   c.norm_A_F = user.A_F.norm();
   c.norm_B_F = user.B_F.norm();
   c.norm_C_F = user.C_F.norm();

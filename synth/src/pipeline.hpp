@@ -39,6 +39,10 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
                             const std::vector<lmi::SparseEntry>& basis_error, const Settings& settings,
                             const std::string& what, const std::string& hint);
 
+// What an infeasible LMI means when F is block-diagonal (docs/maths.md §23): one multiplier
+// per block is a sufficient condition only, so its infeasibility proves no more than that.
+std::string structured_infeasible_hint();
+
 // Minimise g subject to `lmi` (Corollary 1 (21), or (124)); throws with the solver's reason,
 // or phase I's verdict, if it does not end Solved. `what` names the LMI in messages;
 // `failure_hint` is added to a numerical failure (not to a certified infeasibility).

@@ -97,6 +97,7 @@ Plant scaled_plant(const Plant& P, const PlantScaling& s) {
   q.H = Dinv * P.H * s.uncertainty;
   q.E = P.E * D / s.uncertainty;
   q.G = P.G.size() > 0 ? MatrixXd(Dinv * P.G) : MatrixXd::Zero(P.n(), 0);  // u keeps its units
+  q.F_blocks = P.F_blocks;
   return q;
 }
 

@@ -73,7 +73,9 @@ double preflight(const Plant& plant, const Settings& settings) {
                   "(filter.form: observer), where the uncertainty acts on the error dynamics (docs/maths.md (122))");
     }
     // Robust stability is not enough: Theorem 1 needs a quadratic Lyapunov function for
-    // every admissible F, i.e. ‖E (zI − A)⁻¹ H‖∞ < 1 (docs/maths.md §3.7, eq. (119)).
+    // every admissible F, i.e. ‖E (zI − A)⁻¹ H‖∞ < 1 (docs/maths.md §3.7, eq. (119)). For a
+    // block-diagonal F the witness's full F₀ is not admissible: no such verdict (§23).
+    if (plant.structured()) return NAN;
     const certify::GainWitness w = certify::uncertainty_gain_witness(plant.A, plant.H, plant.E);
     if (w.verified)
       throw Error(ErrorCode::Infeasible,
@@ -157,8 +159,10 @@ SynthesisResult synthesize_augmented(const Plant& plant, const PlantScaling& sc,
   const std::vector<lmi::SparseEntry> basis_error = theorem1_basis_error(T, plant);
   // Corollary 1, docs/maths.md (21): minimise γ² subject to LMI (18)
   const sdp::Solution sol = solve_min_gamma(T.lmi, T.g, basis_error, settings, observer, "Theorem 1 LMI",
-                                            " (the plant is robustly Schur stable for the sampled F, but the uncertainty "
-                                            "bound H, E is too large for a quadratic certificate)",
+                                            plant.structured()
+                                                ? structured_infeasible_hint()
+                                                : " (the plant is robustly Schur stable for the sampled F, but the "
+                                                  "uncertainty bound H, E is too large for a quadratic certificate)",
                                             boundary_hint(uncertainty_gain));
   SynthesisResult res;
   res.solver = solver_info(sol, T.lmi, sc, settings);
@@ -200,6 +204,9 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
                 "certificate failed, no filter written:" + failed_checks(res.certificate, res.gamma));
   const double f = sc.gamma_factor();
   res.bound = bound_statement(res.filter.form, user_plant.uncertain());
+  if (user_plant.structured())
+    res.bound += "; F = diag(F_1, ..., F_" + std::to_string(user_plant.F_blocks.size()) +
+                 "), each ||F_b(k)|| <= 1, one S-procedure multiplier per block (docs/maths.md §23)";
   res.filter = user_filter(res.filter, sc);
   res.certificate = in_user_units(res.certificate, sc, res.filter);
   res.gamma /= f;

@@ -404,6 +404,23 @@ TEST(Stability, SampledRobustStabilityFindsTheVertex) {
   EXPECT_THROW(hinf::certify::sampled_robust_stability(pl, f, std::vector<MatrixXd>{MatrixXd::Constant(1, 1, 1.5)}), hinf::Error);
 }
 
+TEST(Stability, BlockDiagonalFIsSampledOnItsBlocks) {
+  std::mt19937_64 rng(5);
+  hinf::Plant pl = random_nominal_plant(3, 1, 1, 1, 0.5, 3);
+  pl.H = random_matrix(rng, 3, 3) * 0.1;
+  pl.E = random_matrix(rng, 3, 3);
+  pl.F_blocks = {1, 2};
+  const hinf::Filter f{MatrixXd::Zero(3, 3), MatrixXd::Zero(3, 1), MatrixXd::Zero(1, 3)};
+  const hinf::certify::StabilitySample s = hinf::certify::sampled_robust_stability(pl, f, 200, 5u);
+  EXPECT_EQ(s.samples, 1 + 2 + 2 * (1 + 4) + 200);  // unit entries inside the blocks only
+  EXPECT_TRUE(s.worst_F.topRightCorner(1, 2).isZero(0.0) && s.worst_F.bottomLeftCorner(2, 1).isZero(0.0));
+  EXPECT_LE(std::abs(s.worst_F(0, 0)), 1 + 1e-12);
+  EXPECT_LE(Eigen::JacobiSVD<MatrixXd>(s.worst_F.bottomRightCorner(2, 2)).singularValues()(0), 1 + 1e-12);
+  MatrixXd across = MatrixXd::Zero(3, 3);
+  across(0, 2) = 1;  // ‖F‖ = 1 but outside the blocks: not admissible
+  EXPECT_THROW(hinf::certify::sampled_robust_stability(pl, f, std::vector<MatrixXd>{across}), hinf::Error);
+}
+
 TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {
   std::mt19937_64 rng(3);
   hinf::Plant pl = random_nominal_plant(4, 2, 2, 2, 0.9, 3);

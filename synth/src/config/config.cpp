@@ -46,6 +46,7 @@ void located(const YamlReader& reader, const YAML::Node& root, KeyOf&& key_of, C
 
 // Where each field of the plant, the Hill model and the settings is spelt in a config.
 std::string system_key(const std::string& field) {
+  if (field == "F_blocks") return "uncertainty.blocks";
   return (field == "H" || field == "E" ? "uncertainty." : "system.") + field;
 }
 std::string hill_key(const std::string& field) { return "hill." + field; }
@@ -67,7 +68,8 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   const YAML::Node root =
       reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
-  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter", "constants", "parameters"});
+  reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter", "constants", "parameters",
+                              "uncertainty_blocks"});
 
   const YAML::Node system = root["system"];
   const YAML::Node hill = root["hill"];
@@ -82,8 +84,8 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   const YAML::Node constants = root["constants"];
   const YAML::Node parameters = root["parameters"];
-  if (hill && (constants || parameters))
-    reader.fail(constants ? constants : parameters,
+  if (hill && (constants || parameters || root["uncertainty_blocks"]))
+    reader.fail(constants ? constants : parameters ? parameters : root["uncertainty_blocks"],
                 "'constants' and 'parameters' are only allowed with 'system' (the hill model has hill.delta_bar)");
   if (uncertainty && parameters)
     reader.fail(uncertainty, "the config has both 'uncertainty' (H, E) and 'parameters'; give one: with "
@@ -91,7 +93,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 
   try {
     if (system) {
-      const ParameterModel model = read_parameter_sections(reader, constants, parameters);
+      const ParameterModel model = read_parameter_sections(reader, constants, parameters, root["uncertainty_blocks"]);
       config.plant = read_system_section(reader, system, uncertainty, config.sampling, model);
       located(reader, root, system_key, [&] { validate_plant(config.plant); });
       if (config.sampling)

@@ -35,8 +35,11 @@ std::vector<std::pair<std::string, YAML::Node>> named_entries(const YamlReader& 
 }  // namespace
 
 ParameterModel read_parameter_sections(const YamlReader& reader, const YAML::Node& constants,
-                                       const YAML::Node& parameters) {
+                                       const YAML::Node& parameters, const YAML::Node& blocks) {
   ParameterModel model;
+  if (blocks && !parameters)
+    reader.fail(blocks, "uncertainty_blocks: only with 'parameters' (with uncertainty: H, E, give uncertainty.blocks)");
+  if (blocks) model.block_per_parameter = reader.choice(blocks, "uncertainty_blocks", {"per_parameter", "full"}) == "per_parameter";
   if (constants)
     for (const auto& [name, value] : named_entries(reader, constants, "constants", model.symbols))
       model.symbols.constants[name] = reader.finite_number(value, "constants." + name);

@@ -24,6 +24,7 @@ namespace hinf::synth {
 struct ParameterModel {
   ExpressionSymbols symbols;
   std::vector<UncertainParameter> parameters;
+  bool block_per_parameter = true;  // uncertainty_blocks: per_parameter (true) | full (docs/maths.md §23)
 };
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling,
@@ -31,8 +32,9 @@ Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
 
 // `constants:` {name: number} and `parameters:` {name: {nominal, range: [low, high]}}; either
 // node may be undefined. Names are identifiers, each declared once.
+// `uncertainty_blocks` (per_parameter | full; only with `parameters`) may be undefined.
 ParameterModel read_parameter_sections(const YamlReader& reader, const YAML::Node& constants,
-                                       const YAML::Node& parameters);
+                                       const YAML::Node& parameters, const YAML::Node& blocks);
 
 // `hill:`; values and shapes are checked by validate_hill_model (the caller).
 HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill);

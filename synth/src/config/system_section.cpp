@@ -92,6 +92,7 @@ Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system,
   const UncertaintyFactors f = uncertainty_from_parameters(coefficients, model.parameters, plant.A.rows());
   plant.H = f.H;
   plant.E = f.E;
+  if (model.block_per_parameter) plant.F_blocks = f.blocks;  // one multiplier per parameter (§23)
   return plant;
 }
 
@@ -112,10 +113,22 @@ Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
   plant.L = required_matrix(reader, system, "system", "L", "l x n estimated signal");
   plant.G = system["G"] ? reader.matrix(system["G"], "system.G") : Eigen::MatrixXd::Zero(plant.A.rows(), 0);
   if (uncertainty) {
-    reader.check_map(uncertainty, "uncertainty", {"H", "E"});
+    reader.check_map(uncertainty, "uncertainty", {"H", "E", "blocks"});
     const char* both = "Delta A = H F E needs both H and E";
     plant.H = required_matrix(reader, uncertainty, "uncertainty", "H", both);
     plant.E = required_matrix(reader, uncertainty, "uncertainty", "E", both);
+    if (const YAML::Node blocks = uncertainty["blocks"]) {  // F block-diagonal (docs/maths.md §23)
+      if (!blocks.IsSequence() || blocks.size() == 0 || blocks.size() > kMaxMatrixDimension)
+        reader.fail(blocks, "uncertainty.blocks: expected a list of at most " + std::to_string(kMaxMatrixDimension) +
+                                " block sizes, e.g. [2, 1]");
+      for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const int size = reader.integer(blocks[b], "uncertainty.blocks entry " + std::to_string(b + 1));
+        if (size <= 0) reader.fail(blocks[b], "uncertainty.blocks entry " + std::to_string(b + 1) + " = " +
+                                                  std::to_string(size) + ": must be > 0");
+        plant.F_blocks.push_back(size);
+      }
+      if (plant.F_blocks.size() == 1) plant.F_blocks.clear();  // one block: F full
+    }
   } else {
     plant.H = Eigen::MatrixXd::Zero(plant.A.rows(), 0);
     plant.E = Eigen::MatrixXd::Zero(0, plant.A.cols());

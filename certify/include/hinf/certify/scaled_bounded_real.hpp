@@ -33,6 +33,9 @@ namespace hinf::certify {
 struct ScaledBoundedRealTest {
   bool feasible = false;     // certified: ‖G_λ‖∞ < 1 at lambda (analysis LMI feasible at γ)
   double lambda = 0;         // S-procedure multiplier (in the user's H, E units)
+  // F block-diagonal (docs/maths.md §23): the multiplier of each block, λ·w_b (w the
+  // block_weights() found); one entry, lambda, otherwise
+  Eigen::VectorXd multipliers;
   double scaled_norm = 0;    // certified upper value of ‖G_λ‖∞ at lambda (< 1 iff feasible)
   int norm_evaluations = 0;  // H∞ norms computed
 };
@@ -62,6 +65,9 @@ class ScaledBoundedReal {
   double gamma_at_multiplier(double lambda, double gamma_lo, double gamma_hi, double rel_tol);
 
   int evaluations() const { return evaluations_; }
+  // The relative multipliers w_b of F's blocks (λ_b = λ·w_b) that test() settled on; all 1
+  // (one entry) when F is one block. scaled_norm and gamma_at_multiplier use them.
+  const Eigen::VectorXd& block_weights() const { return weights_; }
 
  private:
   struct Slope {
@@ -85,11 +91,17 @@ class ScaledBoundedReal {
   // slope_search returns true when it located the minimum (or settled the verdict).
   bool slope_search(double gamma, double d0, Best& best);
   void golden_section_search(double gamma, double d0, Best& best);
+  // The search over λ for the current weights (slope search, golden-section fallback).
+  void search_common_multiplier(double gamma, double d0, Best& best);
+  // F block-diagonal: cyclic searches over each log w_b (b ≥ 1), each followed by the
+  // search over λ, while they lower the norm (docs/maths.md §23).
+  void search_block_weights(double gamma, Best& best);
 
   const hinf::Plant& plant_;
   hinf::StateSpace e_;
   int pq_ = 0;
   Eigen::MatrixXd B_, C_, D_;
+  Eigen::VectorXd weights_;
   int evaluations_ = 0;
 };
 

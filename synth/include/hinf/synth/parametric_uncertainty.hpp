@@ -24,6 +24,7 @@ struct UncertainParameter {
 struct UncertaintyFactors {
   Eigen::MatrixXd H;  // n×j
   Eigen::MatrixXd E;  // j×n
+  std::vector<int> blocks;  // F's block per parameter (Plant::F_blocks); empty when one parameter enters
 };
 UncertaintyFactors uncertainty_from_parameters(const std::vector<Eigen::MatrixXd>& coefficients,
                                                const std::vector<UncertainParameter>& parameters, Eigen::Index n);

@@ -38,6 +38,7 @@ struct Certificate {
   // for some multiplier λ > 0
   bool robust_feasible_at_gamma = false;
   double robust_multiplier = 0;           // λ found (user's H, E units; 0 without uncertainty)
+  Eigen::VectorXd robust_block_multipliers;  // F block-diagonal (§23): λ_b per block; empty otherwise
   double robust_scaled_norm = 0;          // certified ‖·‖∞ at that λ (< 1 iff feasible)
   // the smallest γ at which the analysis LMI is feasible with that λ (≤ γ; +inf if
   // infeasible at γ) — an upper bound on the robust ℓ₂ gain. `analyze` minimises over λ too.
