@@ -35,6 +35,17 @@ std::string analysis_json(const std::string& gains_path, const runtime_yaml::Gai
   j["hinf_norm_peak_frequency_hz"] = sample_time ? json_num(peak_hz(a, *sample_time)) : Json(nullptr);
   j["spectral_radius_sampled_max"] = json_num(a.spectral_radius_sampled_max);
   j["robust_bound"] = json_num(a.robust_bound);
+  if (a.has_worst_F) {
+    j["worst_F_gain"] = json_num(a.worst_F_gain);
+    Json rows = Json::array();
+    for (Eigen::Index r = 0; r < a.worst_F.rows(); ++r) {
+      Json row = Json::array();
+      for (Eigen::Index c = 0; c < a.worst_F.cols(); ++c) row.push_back(json_num(a.worst_F(r, c)));
+      rows.push_back(std::move(row));
+    }
+    j["worst_F"] = std::move(rows);
+    j["worst_F_evaluations"] = a.worst_F_evaluations;
+  }
   if (!a.delta_grid.empty()) {
     j["worst_delta"] = json_num(a.worst_delta);
     j["worst_delta_hinf_norm"] = json_num(a.worst_delta_hinf_norm);
@@ -55,7 +66,7 @@ std::string analysis_json(const std::string& gains_path, const runtime_yaml::Gai
 }  // namespace
 
 void add_analyze(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("analyze", "nominal Hinf norm, robust bound and delta-grid worst case of any filter");
+  auto* cmd = app.add_subcommand("analyze", "nominal Hinf norm, robust bound, the worst case found over the uncertainty (and the delta grid of hill configs) of any filter");
   const auto args = add_config_gains_args(*cmd, "gains YAML");
   auto json = std::make_shared<bool>(false);
   auto points = std::make_shared<int>(41);
@@ -79,6 +90,10 @@ void add_analyze(CLI::App& app, Action& action) {
                 << "\n"
                 << "sampled spectral radius    " << num(a.spectral_radius_sampled_max) << " (max over admissible F)\n"
                 << "robust bound (LMI)         " << num(a.robust_bound) << "\n";
+      if (a.has_worst_F)
+        std::cout << "worst case found           " << num(a.worst_F_gain) << " at a constant admissible F ("
+                  << a.worst_F_evaluations << " norms; sampled, then a local search): the worst-case gain lies in ["
+                  << num(a.worst_F_gain) << ", " << num(a.robust_bound) << "]\n";
       if (!a.delta_grid.empty())
         std::cout << "worst case on delta grid   " << num(a.worst_delta_hinf_norm) << " at delta = " << num(a.worst_delta)
                   << " (" << a.delta_grid.size() << " points, exact plant)\n";

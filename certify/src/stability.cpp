@@ -7,35 +7,13 @@
 #include <sstream>
 #include <string>
 
+#include "gaussian_source.hpp"
 #include "hinf/certify/balance.hpp"
 #include "hinf/certify/error_system.hpp"
 #include "hinf/common/error.hpp"
 
 namespace hinf::certify {
 namespace {
-
-// Standard normal deviates by the Box–Muller transform from raw mt19937_64 output
-// (std::normal_distribution is implementation-defined; this is not).
-class GaussianSource {
- public:
-  explicit GaussianSource(unsigned seed) : engine_(seed) {}
-  double next() {
-    if (has_spare_) { has_spare_ = false; return spare_; }
-    // 53-bit uniforms in (0, 1].
-    const double u1 = (static_cast<double>(engine_() >> 11) + 1.0) * 0x1.0p-53;
-    const double u2 = static_cast<double>(engine_() >> 11) * 0x1.0p-53;
-    const double r = std::sqrt(-2.0 * std::log(u1));
-    const double t = 2.0 * 3.14159265358979323846 * u2;
-    spare_ = r * std::sin(t);
-    has_spare_ = true;
-    return r * std::cos(t);
-  }
-
- private:
-  std::mt19937_64 engine_;
-  double spare_ = 0;
-  bool has_spare_ = false;
-};
 
 void add_sample(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& F,
                 StabilitySample& out) {
@@ -78,38 +56,43 @@ std::complex<double> dominant_eigenvalue(const Eigen::MatrixXd& M) {
 
 double spectral_radius(const Eigen::MatrixXd& M) { return std::abs(dominant_eigenvalue(M)); }
 
-StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
-                                         int random_samples, unsigned seed) {
+std::vector<Eigen::MatrixXd> admissible_samples(const Plant& plant, int random_samples, unsigned seed) {
   if (random_samples < 0)
     throw Error(ErrorCode::InvalidInput, "sampled_robust_stability: random_samples < 0");
-  StabilitySample out;
+  std::vector<Eigen::MatrixXd> Fs{Eigen::MatrixXd()};  // nominal, F = 0
+  if (!plant.uncertain()) return Fs;
   const Eigen::Index j = plant.H.cols(), k = plant.E.rows();
-  add_sample(plant, filter, Eigen::MatrixXd(), out);  // nominal, F = 0
-  if (!plant.uncertain()) return out;
   const Eigen::MatrixXd I_jk = Eigen::MatrixXd::Identity(j, k);
-  add_sample(plant, filter, I_jk, out);
-  add_sample(plant, filter, -I_jk, out);
+  Fs.push_back(I_jk);
+  Fs.push_back(-I_jk);
   for (Eigen::Index a = 0; a < j; ++a) {
     for (Eigen::Index b = 0; b < k; ++b) {
       Eigen::MatrixXd F = Eigen::MatrixXd::Zero(j, k);
       F(a, b) = 1.0;
       if (on_blocks(plant, F, false)(a, b) == 0) continue;  // outside F's blocks: not admissible
-      add_sample(plant, filter, F, out);
-      add_sample(plant, filter, -F, out);
+      Fs.push_back(F);
+      Fs.push_back(-F);
     }
   }
-  GaussianSource gauss(seed);
+  detail::GaussianSource gauss(seed);
   for (int s = 0; s < random_samples; ++s) {
     Eigen::MatrixXd G(j, k);
     for (Eigen::Index c = 0; c < k; ++c)
       for (Eigen::Index r = 0; r < j; ++r) G(r, c) = gauss.next();
     if (plant.structured()) {
-      add_sample(plant, filter, on_blocks(plant, G, true), out);  // each ‖F_b‖₂ = 1
+      Fs.push_back(on_blocks(plant, G, true));  // each ‖F_b‖₂ = 1
       continue;
     }
     const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(0);
-    if (norm > 0) add_sample(plant, filter, G / norm, out);  // ‖F‖₂ = 1
+    if (norm > 0) Fs.push_back(G / norm);  // ‖F‖₂ = 1
   }
+  return Fs;
+}
+
+StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
+                                         int random_samples, unsigned seed) {
+  StabilitySample out;
+  for (const Eigen::MatrixXd& F : admissible_samples(plant, random_samples, seed)) add_sample(plant, filter, F, out);
   return out;
 }
 

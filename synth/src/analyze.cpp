@@ -5,6 +5,7 @@
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/stability.hpp"
+#include "hinf/certify/worst_case.hpp"
 
 namespace hinf::synth {
 
@@ -36,6 +37,13 @@ FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantS
     }
   } else {
     a.robust_bound = INFINITY;
+  }
+  if (plant.uncertain()) {
+    const certify::WorstCaseGain w = certify::worst_case_gain(plant, filter, settings.stability_samples, settings.seed);
+    a.has_worst_F = true;
+    a.worst_F_gain = w.gain;
+    a.worst_F = w.worst_F;
+    a.worst_F_evaluations = w.evaluations;
   }
   if (hill && hill->delta_bar > 0 && delta_points >= 2) {
     for (int i = 0; i < delta_points; ++i) {

@@ -30,7 +30,8 @@ d = json.loads(text, parse_constant=refuse)
 assert d["gains"] == path, "gains %r != %r" % (d["gains"], path)
 want = ["gains", "claimed_gamma", "spectral_radius_nominal", "hinf_norm_nominal",
         "hinf_norm_peak_frequency", "sample_time_s", "hinf_norm_peak_frequency_hz",
-        "spectral_radius_sampled_max", "robust_bound", "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
+        "spectral_radius_sampled_max", "robust_bound", "worst_F_gain", "worst_F", "worst_F_evaluations",
+        "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
 assert list(d) == want, list(d)
 # the hill config states T = 0.1 s: the peak in Hz is θ/(2πT)
 import math
@@ -39,7 +40,10 @@ assert abs(d["hinf_norm_peak_frequency_hz"] - d["hinf_norm_peak_frequency"] / (2
 assert len(d["delta_grid"]) == 3, d["delta_grid"]
 for p in d["delta_grid"]:
     assert list(p) == ["delta", "spectral_radius", "hinf_norm"], list(p)
-for k in want[2:11]:
+for k in want[2:10] + ["worst_F_evaluations", "worst_delta", "worst_delta_hinf_norm"]:
     assert isinstance(d[k], (int, float)), k
+# the worst case found over F (docs/maths.md (140)) lies between the nominal norm and the bound
+assert d["hinf_norm_nominal"] <= d["worst_F_gain"] * (1 + 1e-8) and d["worst_F_gain"] <= d["robust_bound"] * (1 + 1e-8), d
+assert len(d["worst_F"]) == 6 and all(len(r) == 6 for r in d["worst_F"]), d["worst_F"]
 print("ok: gains = %r" % d["gains"])
 PY

@@ -21,6 +21,7 @@
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/riccati_filter.hpp"
 #include "hinf/certify/stability.hpp"
+#include "hinf/certify/worst_case.hpp"
 #include "hinf/common/error.hpp"
 #include "random_plants.hpp"
 
@@ -419,6 +420,21 @@ TEST(Stability, BlockDiagonalFIsSampledOnItsBlocks) {
   MatrixXd across = MatrixXd::Zero(3, 3);
   across(0, 2) = 1;  // ‖F‖ = 1 but outside the blocks: not admissible
   EXPECT_THROW(hinf::certify::sampled_robust_stability(pl, f, std::vector<MatrixXd>{across}), hinf::Error);
+}
+
+// The worst case found over the uncertainty (docs/maths.md §24): a scalar closed form, and
+// never above the certified robust bound on random plants.
+TEST(WorstCase, ScalarPlantWorstFIsTheVertex) {
+  // x⁺ = (0.5 + 0.3 f) x + 2 w, zero filter, z = x: gain 2/(1 − 0.5 − 0.3 f) at θ = 0, worst f = 1
+  hinf::Plant pl = scalar_plant(0.5, 2, 1, 1, 1);
+  pl.H = MatrixXd::Constant(1, 1, 1.0);
+  pl.E = MatrixXd::Constant(1, 1, 0.3);
+  const hinf::Filter f{MatrixXd::Zero(1, 1), MatrixXd::Zero(1, 1), MatrixXd::Zero(1, 1)};
+  const hinf::certify::WorstCaseGain w = hinf::certify::worst_case_gain(pl, f, 20, 1u);
+  EXPECT_NEAR(w.gain, 2 / (1 - 0.8), 1e-6);
+  EXPECT_EQ(w.worst_F(0, 0), 1.0);
+  pl.E(0, 0) = 0.6;  // f = 1 puts the pole at 1.1: unstable, +inf
+  EXPECT_TRUE(std::isinf(hinf::certify::worst_case_gain(pl, f, 20, 1u).gain));
 }
 
 TEST(Stability, RandomSamplesAreDeterministicAndAdmissible) {

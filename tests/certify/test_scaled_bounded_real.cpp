@@ -13,6 +13,7 @@
 #include "hinf/synth/config.hpp"
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
+#include "hinf/certify/worst_case.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "random_plants.hpp"
 
@@ -54,6 +55,11 @@ TEST(ScaledBoundedReal, AgreesWithAnalysisLmiOnRandomFilters) {
     const Filter F = hinf::test::random_stable_filter(g, P);
     SCOPED_TRACE(testing::Message() << "n = " << n);
     expect_agreement(P, F);
+    // the worst case found (docs/maths.md §24) lies between the nominal norm and the bound
+    const double bound = hinf::synth::robust_bound(P, F, hinf::synth::Settings{});
+    const hinf::certify::WorstCaseGain w = hinf::certify::worst_case_gain(P, F, 64, 1u);
+    EXPECT_LE(w.gain, bound * (1 + 1e-7));
+    EXPECT_GE(w.gain, hinf::certify::discrete_hinf_norm(hinf::certify::error_system(P, F), 1e-10).lower_bound);
   }
 }
 

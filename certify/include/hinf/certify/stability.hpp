@@ -25,12 +25,17 @@ struct StabilitySample {
   Eigen::MatrixXd worst_F;         // the F attaining max_spectral_radius (j×k)
 };
 
-// ρ(Ā(F)) for F = 0; F = ±I (j×k, padded); F = ±e_a e_bᵀ for every (a, b); and
-// `random_samples` random F = G/σ_max(G), G a j×k standard Gaussian matrix drawn from
-// std::mt19937_64(seed) by the Box–Muller transform (deterministic on every platform).
-// Without uncertainty (j = 0 or k = 0) only the nominal error system is evaluated.
+// The admissible F that check 2 samples, in order: F = 0 (an empty matrix); F = ±I (j×k,
+// padded); F = ±e_a e_bᵀ for every (a, b) inside F's blocks; and `random_samples` random
+// F = G/σ_max(G), G a j×k standard Gaussian matrix drawn from std::mt19937_64(seed) by the
+// Box–Muller transform (deterministic on every platform), each block scaled to norm 1
+// when F is block-diagonal (docs/maths.md §23). Without uncertainty only F = 0.
+std::vector<Eigen::MatrixXd> admissible_samples(const Plant& plant, int random_samples, unsigned seed);
+
+// ρ(Ā(F)) over admissible_samples(plant, random_samples, seed).
 StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filter,
                                          int random_samples, unsigned seed);
+
 
 // ρ(Ā(F)) for each F in `Fs` (each j×k with ‖F‖₂ ≤ 1 + 1e-12, else Error(InvalidInput)).
 // The nominal F = 0 is NOT added implicitly.

@@ -20,6 +20,12 @@ struct FilterAnalysis {
   double hinf_norm_peak_frequency = 0;
   double robust_bound = 0;             // analysis LMI (S-procedure); +inf if infeasible
   double spectral_radius_sampled_max = 0;  // over sampled full-block ‖F‖ ≤ 1
+  // Uncertain plants: the worst constant admissible F found (certify/worst_case.hpp): the
+  // error system's gain there, a lower value of the worst case that robust_bound bounds above
+  bool has_worst_F = false;
+  double worst_F_gain = 0;
+  Eigen::MatrixXd worst_F;
+  int worst_F_evaluations = 0;
   // Hill model only: exact plant at frozen δ on a grid over [−δ̄, δ̄] (structured F)
   std::vector<DeltaPoint> delta_grid;
   double worst_delta = 0, worst_delta_hinf_norm = 0;
