@@ -17,5 +17,6 @@ void add_verify(CLI::App& app, Action& action);
 void add_check(CLI::App& app, Action& action);
 void add_codegen(CLI::App& app, Action& action);
 void add_sweep(CLI::App& app, Action& action);
+void add_compare(CLI::App& app, Action& action);
 
 }  // namespace hinf::cli

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   hinf::cli::add_check(app, action);
   hinf::cli::add_codegen(app, action);
   hinf::cli::add_sweep(app, action);
+  hinf::cli::add_compare(app, action);
   // A mistyped subcommand would otherwise only get CLI11's "A subcommand is required".
   if (argc >= 2 && argv[1][0] != '-') {
     std::vector<std::string> names;

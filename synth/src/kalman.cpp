@@ -7,6 +7,7 @@
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/riccati_filter.hpp"
+#include "hinf/common/number_text.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/synth/validate_plant.hpp"
 
@@ -35,7 +36,7 @@ SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings) {
   r.certificate = certify_filter(plant, r.filter, claim, settings);
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
-                "the Kalman predictor's certificate failed at gamma = " + std::to_string(claim) + "; no gains written");
+                "the Kalman predictor's certificate failed at gamma = " + significant_text(claim, 10) + "; no gains written");
   r.gamma = claim;
   r.gamma_squared = claim * claim;
   r.bound = bound_statement(FilterForm::Observer, plant.uncertain());

@@ -1,0 +1,93 @@
+// hinf-synth compare CONFIG GAINS [-o sigma.csv] [--plot sigma.png] [--points N]
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "hinf/common/atomic_file.hpp"
+#include "hinf/common/gnuplot.hpp"
+#include "hinf/synth/comparison.hpp"
+
+namespace hinf::cli {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
+  std::ostringstream os;
+  os << "theta_rad_per_sample,frequency_hz,sigma_filter,sigma_kalman\n";
+  for (std::size_t i = 0; i < c.theta.size(); ++i)
+    os << num(c.theta[i]) << ',' << (T ? num(c.theta[i] / (2 * kPi * *T)) : "") << ',' << num(c.filter.sigma[i])
+       << ',' << num(c.kalman.sigma[i]) << '\n';
+  return os.str();
+}
+
+std::string plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz) {
+  std::ostringstream gp;
+  const std::string x = hz ? "2" : "1";
+  gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
+     << "set grid\nset key top left\nset logscale xy\nset datafile separator ','\n"
+     << "set xlabel " << (hz ? "'frequency (Hz)'" : "'frequency (rad/sample)'") << "\n"
+     << "set ylabel 'largest singular value of the error system'\n"
+     << "set title 'estimation error gain: the filter beside the Kalman predictor' noenhanced\n"
+     << "plot " << gnuplot_quoted(data) << " every ::1 using " << x << ":3 with lines lw 2 lc rgb '#d62728' title "
+     << gnuplot_quoted(gains) << " noenhanced, " << gnuplot_quoted(data) << " every ::1 using " << x
+     << ":4 with lines lw 2 lc rgb '#1f77b4' title 'Kalman predictor'\nset output\n";
+  return gp.str();
+}
+
+void write_plot(const std::string& csv, const std::string& png, const std::string& gains, bool hz,
+                const std::vector<std::string>& inputs) {
+  AtomicFileSet outputs;
+  for (const auto& in : inputs) outputs.protect(in);
+  const std::string png_tmp = outputs.reserve(png);
+  AtomicFileSet scratch;  // never committed: removed on return
+  const std::filesystem::path dir = std::filesystem::path(png).parent_path();
+  const auto beside = [&](const std::string& f) { return ((dir.empty() ? std::filesystem::path(".") : dir) / f).string(); };
+  const std::string data = scratch.add(beside("compare-plot.csv"), csv);
+  const std::string script = scratch.add(beside("compare-plot.gp"), plot_script(data, png_tmp, gains, hz));
+  const int rc = run_gnuplot(script);
+  if (rc != 0 || !std::filesystem::exists(png_tmp) || std::filesystem::file_size(png_tmp) == 0)
+    throw Error(ErrorCode::InvalidInput, rc < 0 ? "--plot: cannot run gnuplot (is the gnuplot package installed?)"
+                                                : "--plot: gnuplot failed (exit status " + std::to_string(rc) + ")");
+  outputs.commit();
+}
+
+void print_row(const std::string& name, const synth::FilterFigures& f) {
+  std::printf("%-28s %-24s %-24s %s\n", name.c_str(), num(f.hinf_norm_nominal).c_str(),
+              std::isnan(f.robust_bound) ? "-" : num(f.robust_bound).c_str(), num(f.h2_norm_nominal).c_str());
+}
+
+}  // namespace
+
+void add_compare(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand(
+      "compare", "a filter beside the Kalman predictor of the same plant: worst-case gain, robust bound, RMS error "
+                 "under white noise, and sigma(omega) of both error systems (CSV, PNG)");
+  const auto args = add_config_gains_args(*cmd, "gains YAML of the filter to compare");
+  auto csv = std::make_shared<std::string>();
+  auto plot = std::make_shared<std::string>();
+  auto points = std::make_shared<int>(400);
+  cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman");
+  cmd->add_option("--plot", *plot, "PNG of both sigma curves (gnuplot)");
+  cmd->add_option("--points", *points, "log-spaced frequencies (default 400; both peaks are added)")
+      ->check(CLI::Range(2, 100000));
+  cmd->callback([=, &action] {
+    action = [=]() -> int {
+      const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
+      const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points);
+      const std::optional<double> T = in.config.sample_time();
+      std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
+      print_row(args->gains, c.filter);
+      print_row("Kalman predictor", c.kalman);
+      const std::string data = sigma_csv(c, T);
+      if (!csv->empty()) write_file_atomic(*csv, data, {args->config, args->gains});
+      if (!plot->empty()) write_plot(data, *plot, args->gains, T.has_value(), {args->config, args->gains});
+      return 0;
+    };
+  });
+}
+
+}  // namespace hinf::cli

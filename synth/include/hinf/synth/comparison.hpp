@@ -1,0 +1,29 @@
+// A filter beside the Kalman predictor of the same plant (`hinf-synth compare`,
+// docs/maths.md §25): the price of robustness in one table and one plot.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hinf/synth/synthesis.hpp"
+
+namespace hinf::synth {
+
+struct FilterFigures {
+  double hinf_norm_nominal = 0;  // worst-case gain on the nominal plant (symplectic pencil)
+  double hinf_peak_theta = 0;    // where, rad/sample
+  double h2_norm_nominal = 0;    // RMS error under unit white (w, v) (docs/maths.md (132))
+  double robust_bound = 0;       // analysis LMI (50) over the admissible F; NaN for a certain plant
+  std::vector<double> sigma;     // σ_max of the nominal error system on Comparison::theta
+};
+
+struct Comparison {
+  std::vector<double> theta;  // rad/sample
+  FilterFigures filter;       // the given filter
+  FilterFigures kalman;       // the Kalman one-step predictor (kalman_predictor)
+};
+
+// `points` log-spaced frequencies (≥ 2) with both filters' peak frequencies added.
+Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points);
+
+}  // namespace hinf::synth
