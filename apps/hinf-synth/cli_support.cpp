@@ -1,5 +1,10 @@
 #include "cli_support.hpp"
 
+#include <filesystem>
+
+#include "hinf/common/atomic_file.hpp"
+#include "hinf/common/gnuplot.hpp"
+
 #include "hinf/common/number_text.hpp"
 
 #include <cmath>
@@ -96,6 +101,25 @@ void IterationTable::operator()(const synth::IterationReport& report) {
   else
     std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
                  r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
+}
+
+void write_png_by_gnuplot(const std::string& png, const std::string& csv,
+                          const std::function<std::string(const std::string&, const std::string&)>& script,
+                          const std::vector<std::string>& inputs) {
+  AtomicFileSet outputs;
+  for (const auto& in : inputs) outputs.protect(in);
+  const std::string png_tmp = outputs.reserve(png);
+  AtomicFileSet scratch;  // never committed: removed on return
+  const std::filesystem::path dir = std::filesystem::path(png).parent_path();
+  const auto beside = [&](const std::string& f) { return ((dir.empty() ? std::filesystem::path(".") : dir) / f).string(); };
+  const std::string data = scratch.add(beside("plot-data.csv"), csv);
+  const std::string gp = scratch.add(beside("plot-script.gp"), script(data, png_tmp));
+  const int rc = run_gnuplot(gp);
+  std::error_code ec;
+  if (rc != 0 || !std::filesystem::exists(png_tmp, ec) || std::filesystem::file_size(png_tmp, ec) == 0)
+    throw Error(ErrorCode::InvalidInput, rc < 0 ? "--plot: cannot run gnuplot (is the gnuplot package installed?)"
+                                                : "--plot: gnuplot failed (exit status " + std::to_string(rc) + ")");
+  outputs.commit();
 }
 
 }  // namespace hinf::cli

@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/synth/config.hpp"
@@ -32,6 +34,13 @@ hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Pla
                                 const std::string& path);
 // "%.10g"
 std::string num(double v);
+// A PNG drawn by gnuplot from CSV data (sweep --plot, compare --plot): `script(data_path,
+// png_path)` is the gnuplot script; the data and script are scratch files beside `png`,
+// removed on return; the PNG is written atomically and never replaces one of `inputs`.
+// Error(InvalidInput) if gnuplot cannot run or draws nothing.
+void write_png_by_gnuplot(const std::string& png, const std::string& csv,
+                          const std::function<std::string(const std::string&, const std::string&)>& script,
+                          const std::vector<std::string>& inputs);
 // Coefficient ranges of the plant matrices (docs/maths.md [D5]), for --verbose.
 void print_coefficient_ranges(const hinf::Plant& plant, std::FILE* out);
 // SDP-solver-style iteration table on stderr.

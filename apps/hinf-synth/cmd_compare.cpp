@@ -1,13 +1,12 @@
 // hinf-synth compare CONFIG GAINS [-o sigma.csv] [--plot sigma.png] [--points N]
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
-#include "hinf/common/gnuplot.hpp"
+#include "hinf/common/gnuplot.hpp"  // gnuplot_quoted
 #include "hinf/synth/comparison.hpp"
 
 namespace hinf::cli {
@@ -36,23 +35,6 @@ std::string plot_script(const std::string& data, const std::string& png, const s
      << gnuplot_quoted(gains) << " noenhanced, " << gnuplot_quoted(data) << " every ::1 using " << x
      << ":4 with lines lw 2 lc rgb '#1f77b4' title 'Kalman predictor'\nset output\n";
   return gp.str();
-}
-
-void write_plot(const std::string& csv, const std::string& png, const std::string& gains, bool hz,
-                const std::vector<std::string>& inputs) {
-  AtomicFileSet outputs;
-  for (const auto& in : inputs) outputs.protect(in);
-  const std::string png_tmp = outputs.reserve(png);
-  AtomicFileSet scratch;  // never committed: removed on return
-  const std::filesystem::path dir = std::filesystem::path(png).parent_path();
-  const auto beside = [&](const std::string& f) { return ((dir.empty() ? std::filesystem::path(".") : dir) / f).string(); };
-  const std::string data = scratch.add(beside("compare-plot.csv"), csv);
-  const std::string script = scratch.add(beside("compare-plot.gp"), plot_script(data, png_tmp, gains, hz));
-  const int rc = run_gnuplot(script);
-  if (rc != 0 || !std::filesystem::exists(png_tmp) || std::filesystem::file_size(png_tmp) == 0)
-    throw Error(ErrorCode::InvalidInput, rc < 0 ? "--plot: cannot run gnuplot (is the gnuplot package installed?)"
-                                                : "--plot: gnuplot failed (exit status " + std::to_string(rc) + ")");
-  outputs.commit();
 }
 
 void print_row(const std::string& name, const synth::FilterFigures& f) {
@@ -84,7 +66,11 @@ void add_compare(CLI::App& app, Action& action) {
       print_row("Kalman predictor", c.kalman);
       const std::string data = sigma_csv(c, T);
       if (!csv->empty()) write_file_atomic(*csv, data, {args->config, args->gains});
-      if (!plot->empty()) write_plot(data, *plot, args->gains, T.has_value(), {args->config, args->gains});
+      if (!plot->empty())
+        write_png_by_gnuplot(
+            *plot, data,
+            [&](const std::string& d, const std::string& png) { return plot_script(d, png, args->gains, T.has_value()); },
+            {args->config, args->gains});
       return 0;
     };
   });

@@ -1,7 +1,6 @@
 // hinf-synth sweep CONFIG (--param NAME=LO:STEP:HI | --max-feasible NAME=LO:HI)
 //   [-o sweep.csv] [--json sweep.json] [--plot sweep.png] [--tolerance T]
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -96,24 +95,12 @@ std::string plot_script(const std::string& name, const std::string& data, const 
   return gp.str();
 }
 
-void write_plot(const std::string& name, const std::vector<synth::SweepPoint>& points, const std::string& csv,
-                const std::string& png, const std::string& config) {
+// The smallest certified γ, where the uncertified points are drawn (1 if none).
+double plot_floor(const std::vector<synth::SweepPoint>& points) {
   double floor = 0;
   for (const auto& p : points)
     if (p.outcome == ErrorCode::Ok && (floor == 0 || p.gamma < floor)) floor = p.gamma;
-  AtomicFileSet outputs;
-  outputs.protect(config);
-  const std::string png_tmp = outputs.reserve(png);
-  AtomicFileSet scratch;  // never committed: removed on return
-  const std::string dir = std::filesystem::path(png).parent_path().string();
-  const auto beside = [&](const std::string& f) { return (std::filesystem::path(dir.empty() ? "." : dir) / f).string(); };
-  const std::string data = scratch.add(beside("sweep-plot.csv"), csv);
-  const std::string script = scratch.add(beside("sweep-plot.gp"), plot_script(name, data, png_tmp, floor > 0 ? floor : 1.0));
-  const int rc = run_gnuplot(script);
-  if (rc != 0 || !std::filesystem::exists(png_tmp) || std::filesystem::file_size(png_tmp) == 0)
-    throw Error(ErrorCode::InvalidInput, rc < 0 ? "--plot: cannot run gnuplot (is the gnuplot package installed?)"
-                                                : "--plot: gnuplot failed (exit status " + std::to_string(rc) + ")");
-  outputs.commit();
+  return floor > 0 ? floor : 1.0;
 }
 
 void print_points(const std::string& name, const std::vector<synth::SweepPoint>& points) {
@@ -143,7 +130,11 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
     for (const auto& p : points) j["points"].push_back(point_json(p));
     write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
   }
-  if (!a.plot.empty()) write_plot(name, points, csv, a.plot, a.config);
+  if (!a.plot.empty())
+    write_png_by_gnuplot(
+        a.plot, csv,
+        [&](const std::string& data, const std::string& png) { return plot_script(name, data, png, plot_floor(points)); },
+        {a.config});
   return 0;
 }
 

@@ -22,6 +22,11 @@ using hinf::number_text;
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
 
+// The two-mass spring-damper of tests/data/plants: all but A and the parameters.
+#define TWO_MASS_REST \
+  "  B: [[0, 0], [0, 0], [1, 0], [0, 1]]\n  C: [[0, 1, 0, 0]]\n  D: [[0.1]]\n  L: [[1, 0, 0, 0], [0, 1, 0, 0]]\n" \
+  "  sample_time: 0.05\n  discretisation: euler\n"
+
 std::string matrix_text(const MatrixXd& M) {
   std::ostringstream os;
   os << "[";
@@ -81,19 +86,10 @@ TEST(Parameters, TheHillPlantWrittenWithParametersGivesTodaysGamma) {
 }
 
 // Two uncertain stiffnesses (the coupling k and the wall spring kw, ±2 %).
-const char* const kTwoStiffnesses = R"(constants: {c: 0.2}
-parameters:
-  k: {nominal: 1, range: [0.98, 1.02]}
-  kw: {nominal: 1, range: [0.98, 1.02]}
-system:
-  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-kw - k, k, -c, 0], [k, -k, 0, -c]]
-  B: [[0, 0], [0, 0], [1, 0], [0, 1]]
-  C: [[0, 1, 0, 0]]
-  D: [[0.1]]
-  L: [[1, 0, 0, 0], [0, 1, 0, 0]]
-  sample_time: 0.05
-  discretisation: euler
-)";
+const char* const kTwoStiffnesses =
+    "constants: {c: 0.2}\n"
+    "parameters:\n  k: {nominal: 1, range: [0.98, 1.02]}\n  kw: {nominal: 1, range: [0.98, 1.02]}\n"
+    "system:\n  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-kw - k, k, -c, 0], [k, -k, 0, -c]]\n" TWO_MASS_REST;
 
 TEST(Parameters, ABlockPerParameterIsLessConservativeThanOneFullBlock) {
   const synth::SynthConfig blocks = synth::parse_config(kTwoStiffnesses, "two.yaml");
@@ -123,18 +119,10 @@ TEST(Parameters, ABlockPerParameterIsLessConservativeThanOneFullBlock) {
 }
 
 // The two-mass spring-damper of tests/data/plants with its coupling stiffness k a parameter.
-const char* const kTwoMassWithK = R"(constants: {c: 0.2}
-parameters:
-  k: {nominal: 1, range: [0.95, 1.05]}   # N/m
-system:
-  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-1 - k, k, -c, 0], [k, -k, 0, -c]]
-  B: [[0, 0], [0, 0], [1, 0], [0, 1]]
-  C: [[0, 1, 0, 0]]
-  D: [[0.1]]
-  L: [[1, 0, 0, 0], [0, 1, 0, 0]]
-  sample_time: 0.05
-  discretisation: euler
-)";
+const char* const kTwoMassWithK =
+    "constants: {c: 0.2}\n"
+    "parameters:\n  k: {nominal: 1, range: [0.95, 1.05]}   # N/m\n"
+    "system:\n  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-1 - k, k, -c, 0], [k, -k, 0, -c]]\n" TWO_MASS_REST;
 
 TEST(Parameters, ACouplingStiffnessGivesTheHandWrittenUncertainty) {
   const synth::SynthConfig by_hand = synth::load_config(HINF_SOURCE_DIR "/tests/data/plants/two-mass-spring-damper.yaml");
