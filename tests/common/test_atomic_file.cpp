@@ -13,6 +13,7 @@
 
 #include "scratch_dir.hpp"
 #include "hinf/common/atomic_file.hpp"
+#include "hinf/common/error.hpp"
 
 namespace {
 
@@ -41,6 +42,28 @@ TEST(AtomicFileSet, FilesAppearTogetherAndReplaceThePreviousOnes) {
   EXPECT_EQ(dir.entries(), 2) << "a temporary or a kept previous file was left";
   // the name carries a random part: not guessable from the pid alone
   EXPECT_GT(fs::path(temporary).filename().string().size(), std::string(".a.txt.tmp.") .size() + 16);
+}
+
+// A rename failing part-way through commit() puts every previous file back: all or
+// nothing (here the second temporary vanishes before the commit, so its rename fails after
+// the first file was already replaced).
+TEST(AtomicFileSet, ARenameFailingPartWayRollsTheSetBack) {
+  ScratchDir dir("atomic_file");
+  std::ofstream(dir / "a.txt") << "old a";
+  std::ofstream(dir / "b.txt") << "old b";
+  hinf::AtomicFileSet set;
+  set.add(dir / "a.txt", "new a");
+  const std::string b_temporary = set.add(dir / "b.txt", "new b");
+  ASSERT_EQ(::unlink(b_temporary.c_str()), 0);
+  try {
+    set.commit();
+    ADD_FAILURE() << "commit succeeded without b's temporary";
+  } catch (const hinf::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no file of the set was changed"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(text_of(dir / "a.txt"), "old a");
+  EXPECT_EQ(text_of(dir / "b.txt"), "old b");
+  EXPECT_EQ(dir.entries(), 2) << "a temporary or a kept previous file was left";
 }
 
 TEST(AtomicFileSet, AnUncommittedSetLeavesNothing) {
