@@ -59,7 +59,8 @@ void add_compare(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
-      const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points);
+      const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points,
+                                                                 in.config.kalman_noise);
       const std::optional<double> T = in.config.sample_time();
       std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
       print_row(args->gains, c.filter);

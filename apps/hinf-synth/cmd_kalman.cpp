@@ -10,7 +10,7 @@ namespace hinf::cli {
 
 void add_kalman(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand(
-      "kalman", "the Kalman one-step predictor of the config's nominal plant (Q = B B^T, R = D D^T), certified at the "
+      "kalman", "the Kalman one-step predictor of the config's nominal plant (Q = B B^T, R = D D^T, or the config's kalman: {Q, R}), certified at the "
                 "worst-case gain it achieves: the H2 reference for the H-infinity filter");
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
@@ -19,7 +19,7 @@ void add_kalman(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::SynthConfig cfg = synth::load_config(*config);
-      const synth::SynthesisResult r = synth::kalman_predictor(cfg.plant, cfg.settings);
+      const synth::SynthesisResult r = synth::kalman_predictor(cfg.plant, cfg.settings, cfg.kalman_noise);
       hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256, cfg.sample_time()}), {*config});
       std::cout << "Kalman predictor: worst-case gain gamma = " << num(r.gamma) << " (certified; nominal Hinf norm "
                 << num(r.certificate.hinf_norm_nominal) << "), RMS error under unit white noise (H2 norm) "

@@ -31,12 +31,13 @@ FilterFigures figures(const Plant& plant, const Filter& filter, const Settings& 
 
 }  // namespace
 
-Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points) {
+Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points,
+                               const KalmanNoise& noise) {
   validate_plant(plant);
   if (points < 2) throw Error(ErrorCode::InvalidInput, "--points = " + std::to_string(points) + ": must be >= 2");
   Comparison c;
   c.filter = figures(plant, filter, settings);
-  const SynthesisResult k = kalman_predictor(plant, settings);
+  const SynthesisResult k = kalman_predictor(plant, settings, noise);
   c.kalman = figures(plant, k.filter, settings);
   c.theta = certify::frequency_grid(points, {c.filter.hinf_peak_theta, c.kalman.hinf_peak_theta});
   c.filter.sigma = certify::sigma_max_on_grid(certify::error_system(plant, filter), c.theta);

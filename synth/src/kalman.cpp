@@ -8,6 +8,7 @@
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/certify/riccati_filter.hpp"
 #include "hinf/common/number_text.hpp"
+#include "hinf/models/discretise.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/synth/validate_plant.hpp"
 
@@ -15,13 +16,45 @@ namespace hinf::synth {
 namespace {
 // The γ written is the achieved bound rounded up by this (it must pass the certificate).
 constexpr double kClaimMargin = 1e-7;
+// Q, R: asymmetry and negative eigenvalues up to this fraction of the largest entry are rounding.
+constexpr double kSymmetryTolerance = 1e-12;
+
+// A symmetric matrix's definiteness: "" if it holds, else what is wrong.
+std::string definiteness_defect(const Eigen::MatrixXd& M, bool strict) {
+  const double scale = M.cwiseAbs().maxCoeff();
+  if (!((M - M.transpose()).cwiseAbs().maxCoeff() <= kSymmetryTolerance * scale)) return ": not symmetric";
+  const double lmin = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (strict && !(lmin > 0)) return ": not positive definite (smallest eigenvalue " + significant_text(lmin, 10) + ")";
+  if (!strict && lmin < -kSymmetryTolerance * scale)
+    return ": not positive semidefinite (smallest eigenvalue " + significant_text(lmin, 10) + ")";
+  return "";
+}
+
 }  // namespace
 
-SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings) {
+void validate_kalman_noise(const KalmanNoise& noise, const Plant& plant) {
+  const auto check = [](const Eigen::MatrixXd& M, const char* name, int size, bool strict) {
+    if (M.size() == 0) return;
+    if (M.rows() != size || M.cols() != size)
+      throw Error::invalid_field(name, ": expected " + std::to_string(size) + "x" + std::to_string(size) + ", got " +
+                                           std::to_string(M.rows()) + "x" + std::to_string(M.cols()));
+    if (!M.allFinite()) throw Error::invalid_field(name, ": an entry is not finite");
+    const std::string defect = definiteness_defect(M, strict);
+    if (!defect.empty()) throw Error::invalid_field(name, defect);
+  };
+  check(noise.Q, "Q", plant.n(), false);
+  check(noise.R, "R", plant.m(), true);
+}
+
+SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings, const KalmanNoise& noise) {
   validate_plant(plant);
   settings.validate();
+  validate_kalman_noise(noise, plant);
+  Plant design = plant;  // the plant whose B Bᵀ, D Dᵀ are the covariances (docs/maths.md (133))
+  if (noise.Q.size() > 0) design.B = models::covariance_factor(noise.Q);
+  if (noise.R.size() > 0) design.D = models::covariance_factor(noise.R);
   const certify::HinfPredictorLevel kf =
-      certify::hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
+      certify::hinf_predictor_at_level(design, std::numeric_limits<double>::infinity());
   if (!kf.feasible)
     throw Error(ErrorCode::Infeasible,
                 "no stationary Kalman predictor: " + kf.reason +
@@ -29,7 +62,9 @@ SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings) {
   SynthesisResult r;
   r.filter = kf.filter;
   r.solver.method = "Kalman one-step predictor: stabilising DARE solution by ordered QZ (docs/maths.md (56)-(59) at "
-                    "gamma = infinity, Q = B B^T, R = D D^T)";
+                    "gamma = infinity, " +
+                    std::string(noise.Q.size() > 0 ? "Q given" : "Q = B B^T") + ", " +
+                    (noise.R.size() > 0 ? "R given" : "R = D D^T") + ")";
   const double nominal = certify::discrete_hinf_norm(certify::error_system(plant, r.filter), 1e-10).norm;
   double claim = nominal * (1 + kClaimMargin);
   if (plant.uncertain()) claim = std::max(claim, robust_bound(plant, r.filter, settings) * (1 + kClaimMargin));

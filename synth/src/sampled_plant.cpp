@@ -13,21 +13,6 @@ using Eigen::MatrixXd;
 
 namespace {
 
-// B with B Bᵀ = Q (Q symmetric positive semidefinite): V Λ^{1/2} from Q = V Λ Vᵀ, the
-// columns of eigenvalues below the rounding level of Q dropped.
-MatrixXd covariance_factor(const MatrixXd& Q) {
-  const Eigen::SelfAdjointEigenSolver<MatrixXd> es(Q);
-  const Eigen::VectorXd& lambda = es.eigenvalues();
-  const double floor = lambda.size() > 0 ? 64 * std::numeric_limits<double>::epsilon() * lambda.cwiseAbs().maxCoeff() : 0;
-  MatrixXd B(Q.rows(), 0);
-  for (Eigen::Index i = lambda.size() - 1; i >= 0; --i) {
-    if (!(lambda(i) > floor)) continue;
-    B.conservativeResize(Eigen::NoChange, B.cols() + 1);
-    B.col(B.cols() - 1) = es.eigenvectors().col(i) * std::sqrt(lambda(i));
-  }
-  return B;
-}
-
 // Finite and within validate_plant's 1e150 (whose squares the synthesis forms).
 bool representable(const MatrixXd& M) { return M.allFinite() && (M.size() == 0 || M.cwiseAbs().maxCoeff() <= 1e150); }
 
@@ -40,7 +25,7 @@ Plant sample_plant(const Plant& c, const SamplingSpec& spec) {
   const models::SampledMatrices s = models::discretise(c.A, T, spec.method);
   Plant d = c;
   d.A = s.A;
-  d.B = spec.white_process_noise ? covariance_factor(models::sampled_white_noise_covariance(c.A, c.B, T))
+  d.B = spec.white_process_noise ? models::covariance_factor(models::sampled_white_noise_covariance(c.A, c.B, T))
                                  : MatrixXd(s.Gamma * c.B);
   d.G = c.G.size() > 0 ? MatrixXd(s.Gamma * c.G) : MatrixXd::Zero(c.n(), 0);
   if (c.uncertain()) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hinf/synth/comparison.hpp"
+#include "hinf/common/error.hpp"
 #include "hinf/synth/config.hpp"
 
 namespace {
@@ -32,6 +33,42 @@ TEST(Comparison, EachFilterWinsInItsOwnNorm) {
     EXPECT_LE(c.filter.robust_bound, hinf.gamma * (1 + 1e-9));
     expect_curve_under_norm(c.filter);
     expect_curve_under_norm(c.kalman);
+  }
+}
+
+// The Kalman predictor's covariances given in the config (kalman: {Q, R}): BBᵀ and DDᵀ
+// written out give the default predictor; scaling both by 4 leaves the gain unchanged (the
+// DARE is homogeneous); a larger R gives a smaller gain; bad matrices are named.
+TEST(Comparison, KalmanCovariancesFromTheConfig) {
+  const std::string base = "system:\n  A: [[1, 0.1], [0, 1]]\n  B: [[0.005], [0.1]]\n  C: [[1, 0]]\n  D: [[0.5]]\n"
+                           "  L: [[1, 0], [0, 1]]\n";
+  const synth::SynthConfig plain = synth::parse_config(base, "k.yaml");
+  const Eigen::MatrixXd K0 = synth::kalman_predictor(plain.plant, plain.settings).filter.K;
+  const synth::SynthConfig same =
+      synth::parse_config(base + "kalman:\n  Q: [[2.5e-5, 5e-4], [5e-4, 0.01]]\n  R: [[0.25]]\n", "k.yaml");
+  EXPECT_LT((synth::kalman_predictor(same.plant, same.settings, same.kalman_noise).filter.K - K0).norm(),
+            1e-12 * K0.norm());
+  const synth::SynthConfig scaled =
+      synth::parse_config(base + "kalman:\n  Q: [[1e-4, 2e-3], [2e-3, 0.04]]\n  R: [[1]]\n", "k.yaml");
+  EXPECT_LT((synth::kalman_predictor(scaled.plant, scaled.settings, scaled.kalman_noise).filter.K - K0).norm(),
+            1e-10 * K0.norm());
+  const synth::SynthConfig noisier = synth::parse_config(base + "kalman: {R: [[25]]}\n", "k.yaml");
+  const synth::SynthesisResult kn = synth::kalman_predictor(noisier.plant, noisier.settings, noisier.kalman_noise);
+  EXPECT_LT(kn.filter.K.norm(), K0.norm());
+  EXPECT_TRUE(kn.certificate.passed);  // certified on the plant itself
+  for (const auto& [bad, key] : std::vector<std::pair<std::string, std::string>>{
+           {"kalman: {Q: [[1, 2], [0, 1]]}", "kalman.Q: not symmetric"},
+           {"kalman: {Q: [[1, 0], [0, -1]]}", "kalman.Q: not positive semidefinite"},
+           {"kalman: {R: [[0]]}", "kalman.R: not positive definite"},
+           {"kalman: {R: [[1, 0], [0, 1]]}", "kalman.R: expected 1x1"},
+           {"kalman: {P: [[1]]}", "kalman.P"}}) {
+    try {
+      synth::parse_config(base + bad + "\n", "k.yaml");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const hinf::Error& e) {
+      EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
   }
 }
 

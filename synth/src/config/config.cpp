@@ -51,6 +51,7 @@ std::string system_key(const std::string& field) {
 }
 std::string hill_key(const std::string& field) { return "hill." + field; }
 std::string solver_key(const std::string& field) { return "solver." + field; }
+std::string kalman_key(const std::string& field) { return "kalman." + field; }
 
 }  // namespace
 
@@ -69,7 +70,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
   const YAML::Node root =
       reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
   reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter", "constants", "parameters",
-                              "uncertainty_blocks"});
+                              "uncertainty_blocks", "kalman"});
 
   const YAML::Node system = root["system"];
   const YAML::Node hill = root["hill"];
@@ -108,6 +109,12 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
       located(reader, root, solver_key, [&] { config.settings.validate(); });
     }
     if (const YAML::Node filter = root["filter"]) config.settings.form = read_filter_section(reader, filter);
+    if (const YAML::Node kalman = root["kalman"]) {  // the Kalman predictor's covariances (docs/maths.md §20)
+      const YamlMap k = reader.map(kalman, "kalman", {"Q", "R"});
+      if (k.has("Q")) config.kalman_noise.Q = k.matrix("Q");
+      if (k.has("R")) config.kalman_noise.R = k.matrix("R");
+      located(reader, root, kalman_key, [&] { validate_kalman_noise(config.kalman_noise, config.plant); });
+    }
   } catch (const YAML::Exception& e) {  // should not happen: every access is checked
     throw Error(ErrorCode::InvalidInput, source_name + ": YAML error: " + e.what());
   }

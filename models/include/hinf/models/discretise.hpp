@@ -11,6 +11,8 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <limits>
 #include <unsupported/Eigen/MatrixFunctions>
 
 namespace hinf::models {
@@ -47,6 +49,22 @@ inline SampledMatrices discretise(const Eigen::MatrixXd& A_c, double T, Discreti
     out.Gamma = expM.topRightCorner(n, n);
   }
   return out;
+}
+
+// B with B Bᵀ = Q (Q symmetric positive semidefinite): V Λ^{1/2} from Q = V Λ Vᵀ, the
+// columns of eigenvalues below the rounding level of Q (64 ε λ_max) dropped.
+inline Eigen::MatrixXd covariance_factor(const Eigen::MatrixXd& Q) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Q);
+  const Eigen::VectorXd& lambda = es.eigenvalues();
+  const double floor =
+      lambda.size() > 0 ? 64 * std::numeric_limits<double>::epsilon() * lambda.cwiseAbs().maxCoeff() : 0;
+  Eigen::MatrixXd B(Q.rows(), 0);
+  for (Eigen::Index i = lambda.size() - 1; i >= 0; --i) {
+    if (!(lambda(i) > floor)) continue;
+    B.conservativeResize(Eigen::NoChange, B.cols() + 1);
+    B.col(B.cols() - 1) = es.eigenvectors().col(i) * std::sqrt(lambda(i));
+  }
+  return B;
 }
 
 // ∫₀ᵀ e^{A_c s} B_c B_cᵀ e^{A_cᵀ s} ds by Van Loan's block exponential, symmetrised.

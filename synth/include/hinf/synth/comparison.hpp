@@ -24,6 +24,7 @@ struct Comparison {
 };
 
 // `points` log-spaced frequencies (≥ 2) with both filters' peak frequencies added.
-Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points);
+Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points,
+                               const KalmanNoise& noise = {});
 
 }  // namespace hinf::synth

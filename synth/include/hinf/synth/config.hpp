@@ -13,6 +13,7 @@
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/sampled_plant.hpp"
 #include "hinf/synth/settings.hpp"
+#include "hinf/synth/synthesis.hpp"
 
 namespace hinf::synth {
 
@@ -21,6 +22,7 @@ struct SynthConfig {
   std::optional<SamplingSpec> sampling;  // set iff `system:` was continuous-time (sample_time)
   std::optional<HillPlantSpec> hill;   // set iff the config used `hill:`
   Settings settings;               // defaults overridden by `solver:`; validated
+  KalmanNoise kalman_noise;        // `kalman: {Q, R}` (hinf-synth kalman, compare); empty: from B, D
   std::string sha256;              // SHA-256 of the config's exact bytes, lowercase hex
   std::string path;                // the path (or source name) it was read from
   // The sample time the filter must be run at, if the config states it (system.sample_time

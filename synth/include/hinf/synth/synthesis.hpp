@@ -115,11 +115,22 @@ using IterationObserver = std::function<void(const IterationReport&)>;
 SynthesisResult synthesize(const Plant& plant, const Settings& settings,
                            const IterationObserver& observer);
 
+// Noise covariances of the Kalman predictor when they are not B Bᵀ and D Dᵀ (a config's
+// `kalman: {Q, R}`): Q (n×n, symmetric positive semidefinite) of the process noise entering
+// x(k+1), R (m×m, symmetric positive definite) of the measurement noise; an empty matrix
+// means the plant's own (B Bᵀ or D Dᵀ).
+struct KalmanNoise {
+  Eigen::MatrixXd Q, R;
+};
+// Error(InvalidInput) naming Q or R (shape, symmetry, definiteness).
+void validate_kalman_noise(const KalmanNoise& noise, const Plant& plant);
+
 // The Kalman one-step predictor of the nominal plant (docs/maths.md §8.1 at γ = ∞, (133)):
-// Q = B Bᵀ, R = D Dᵀ, observer form (needs (A, C) detectable, D Dᵀ ≻ 0), with the
-// certificate of §7 at the smallest γ it achieves (its nominal H∞ norm, or with uncertainty
-// the robust analysis bound, each times 1 + 1e-7). No SDP is solved for the filter itself.
-SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings);
+// Q = B Bᵀ, R = D Dᵀ unless `noise` gives them, observer form (needs (A, C) detectable,
+// R ≻ 0), with the certificate of §7 on the plant itself at the smallest γ it achieves (its
+// nominal H∞ norm, or with uncertainty the robust analysis bound, each times 1 + 1e-7). No
+// SDP is solved for the filter itself.
+SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings, const KalmanNoise& noise = {});
 
 // Independent checks of docs/maths.md §7 for any filter against a plant at bound gamma.
 // `lmi_point` checks (check 1) are only possible for synthesised filters and are
