@@ -115,7 +115,9 @@ void print_points(const std::string& name, const std::vector<synth::SweepPoint>&
 }
 
 int run_sweep(const SweepArgs& a, const std::string& text) {
-  const auto [name, range] = name_and_range(a.param, "--param");
+  const auto name_range = name_and_range(a.param, "--param");
+  const std::string& name = name_range.first;
+  const std::string& range = name_range.second;
   const std::vector<double> values = synth::parse_sweep_range(range, "--param");
   const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
   const std::vector<synth::SweepPoint> points = synth::sweep(parameter, values, text, a.config);

@@ -222,6 +222,9 @@ TEST(Parameters, BadKeysAreNamed) {
              "only allowed with 'system'");
   EXPECT_HAS(config_error(replaced(t, "[k, -k, 0, -c]]", "[k, -k, 0, -c], [0, 0, 0, k]]")), "system.A");
   EXPECT_HAS(config_error(t + "uncertainty_blocks: diagonal\n"), "uncertainty_blocks");
+  std::string many = "parameters:\n";
+  for (int i = 0; i < 17; ++i) many += "  p" + std::to_string(i) + ": {range: [0, 1]}\n";
+  EXPECT_HAS(config_error(many + t.substr(t.find("system:"))), "17 parameters; at most 16");
   const std::string hand = "system: {A: [[0.5, 0], [0, 0.5]], B: [[1], [1]], C: [[1, 0]], D: [[1]], L: [[1, 0]]}\n"
                            "uncertainty: {H: [[0.1, 0], [0, 0.1]], E: [[0.1, 0], [0, 0.1]], blocks: ";
   EXPECT_HAS(config_error(hand + "[1, 2]}\n"), "uncertainty.blocks");

@@ -32,6 +32,11 @@ std::vector<std::pair<std::string, YAML::Node>> named_entries(const YamlReader& 
   return out;
 }
 
+// At most this many parameters: each is a block of F and an LMI multiplier, and its
+// coefficient matrix is n×n while H, E are built (a hostile config cannot ask for more
+// than kMaxParameters·n² doubles, 128 MB at n = 1000).
+constexpr std::size_t kMaxParameters = 16;
+
 }  // namespace
 
 ParameterModel read_parameter_sections(const YamlReader& reader, const YAML::Node& constants,
@@ -44,6 +49,9 @@ ParameterModel read_parameter_sections(const YamlReader& reader, const YAML::Nod
     for (const auto& [name, value] : named_entries(reader, constants, "constants", model.symbols))
       model.symbols.constants[name] = reader.finite_number(value, "constants." + name);
   if (!parameters) return model;
+  if (parameters.IsMap() && parameters.size() > kMaxParameters)
+    reader.fail(parameters, "parameters: " + std::to_string(parameters.size()) + " parameters; at most " +
+                                std::to_string(kMaxParameters) + " (each is a block of the uncertainty and a multiplier)");
   for (const auto& [name, node] : named_entries(reader, parameters, "parameters", model.symbols)) {
     const std::string path = "parameters." + name;
     const YamlMap entry = reader.map(node, path, {"nominal", "range"});
