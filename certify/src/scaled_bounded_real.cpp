@@ -224,7 +224,7 @@ void ScaledBoundedReal::search_block_weights(double gamma, Best& best) {
   }
 }
 
-ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible) {
+ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasible, const Eigen::VectorXd& start) {
   const int evaluations_before = evaluations_;
   ScaledBoundedRealTest out;
   if (!plant_.uncertain()) {
@@ -239,6 +239,8 @@ ScaledBoundedRealTest ScaledBoundedReal::test(double gamma, bool stop_when_feasi
   const double hn = plant_.H.norm(), en = plant_.E.norm();
   const double d0 = (hn > 0 && en > 0) ? std::log(gamma * hn / en) : 0.0;
   weights_.setOnes();
+  if (plant_.structured() && start.size() == weights_.size() && (start.array() > 0).all() && start.allFinite())
+    weights_ = start / start(0);
   if (!plant_.structured()) {
     search_common_multiplier(gamma, d0, best);
   } else {

@@ -101,7 +101,7 @@ SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, 
       backoff ? observer_point(backoff->problem, plant, backoff->solution.x, backoff->gamma_squared)
               : observer_point(O, plant, sol.x, sol.objective);
   res.filter = recover_observer(pt, plant);
-  certify_at_point(plant, certify::observer_lmi_matrix(plant, pt), pt.g, settings, res);
+  certify_at_point(plant, certify::observer_lmi_matrix(plant, pt), pt.g, settings, pt.lambda, res);
   const VectorXd eig_P = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.P, Eigen::EigenvaluesOnly).eigenvalues();
   res.certificate.cond_P = eig_P(eig_P.size() - 1) / eig_P(0);
   return res;

@@ -159,7 +159,8 @@ constexpr double kObserverMismatchTolerance = 1e-12;
 
 // Checks 2–4 (docs/maths.md §7.2–§7.4) at γ; none uses the synthesis solver's numbers (§7).
 // Plant, filter and γ are the scaled ones (an exact change of units, docs/maths.md (112)).
-Certificate certify_checks(const Plant& plant, const Filter& filter, double gamma, const Settings& settings) {
+Certificate certify_checks(const Plant& plant, const Filter& filter, double gamma, const Settings& settings,
+                           const Eigen::VectorXd& multipliers) {
   Certificate c;
   c.gamma = gamma;
   c.norm_A_F = filter.A_F.norm();
@@ -183,7 +184,7 @@ Certificate certify_checks(const Plant& plant, const Filter& filter, double gamm
   // check 4: the robust analysis LMI at γ, decided by the bounded-real lemma with the
   // best S-procedure multiplier (no SDP solver involved; certify/scaled_bounded_real.hpp)
   certify::ScaledBoundedReal robust(plant, es);
-  const certify::ScaledBoundedRealTest br = robust.test(gamma);
+  const certify::ScaledBoundedRealTest br = robust.test(gamma, true, multipliers);
   c.robust_feasible_at_gamma = br.feasible;
   c.robust_multiplier = br.lambda;
   if (plant.structured()) c.robust_block_multipliers = br.multipliers;
@@ -203,13 +204,13 @@ Certificate certify_checks(const Plant& plant, const Filter& filter, double gamm
 // recovered filter miss check 4 by a hair; then it is tried once more at
 // (1 + relative_gap_tol)·γ², still within the solver's accuracy.
 void certify_at_point(const Plant& plant, const MatrixXd& dense_lmi, double g, const Settings& settings,
-                      SynthesisResult& res) {
+                      const Eigen::VectorXd& multipliers, SynthesisResult& res) {
   const certify::DefinitenessCheck lmi_check = certify::check_negative_definite(dense_lmi, 0.0);
   res.gamma_squared = g;
-  res.certificate = certify_checks(plant, res.filter, std::sqrt(g), settings);
+  res.certificate = certify_checks(plant, res.filter, std::sqrt(g), settings, multipliers);
   if (res.certificate.schur_stable && !res.certificate.robust_feasible_at_gamma) {
     res.gamma_squared = g * (1 + settings.relative_gap_tol);
-    res.certificate = certify_checks(plant, res.filter, std::sqrt(res.gamma_squared), settings);
+    res.certificate = certify_checks(plant, res.filter, std::sqrt(res.gamma_squared), settings, multipliers);
   }
   res.gamma = std::sqrt(res.gamma_squared);
   Certificate& cert = res.certificate;

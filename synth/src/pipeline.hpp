@@ -77,14 +77,17 @@ std::optional<Backoff<Problem>> solve_gamma_backoff(const sdp::Solution& sol, Bu
 }
 
 // Checks 2–4 of the certificate (docs/maths.md §7.2–§7.4) at γ, on the error system of the
-// filter's form (certify::error_system); plant, filter and γ in the scaled units.
-Certificate certify_checks(const Plant& plant, const Filter& filter, double gamma, const Settings& settings);
+// filter's form (certify::error_system); plant, filter and γ in the scaled units. With F
+// block-diagonal, `multipliers` (the solver's, one per block; may be empty) start check 4's
+// search over the blocks' weights: a witness the certified norm checks, never a verdict (§23).
+Certificate certify_checks(const Plant& plant, const Filter& filter, double gamma, const Settings& settings,
+                           const Eigen::VectorXd& multipliers = Eigen::VectorXd());
 
 // Checks 1–4 of the certificate at a returned point: check 1 on `dense_lmi` (assembled by
-// certify/, never by the solver's data), checks 2–4 on res.filter; fills res.gamma,
-// res.gamma_squared and res.certificate.
+// certify/, never by the solver's data), checks 2–4 on res.filter (`multipliers`: the
+// point's, as in certify_checks); fills res.gamma, res.gamma_squared and res.certificate.
 void certify_at_point(const Plant& plant, const Eigen::MatrixXd& dense_lmi, double g, const Settings& settings,
-                      SynthesisResult& res);
+                      const Eigen::VectorXd& multipliers, SynthesisResult& res);
 
 // The observer-form pipeline on the scaled plant (observer_synthesis.cpp, docs/maths.md §18).
 SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, const Settings& settings,

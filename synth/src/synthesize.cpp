@@ -142,7 +142,7 @@ namespace {
 // Checks 1–4 of the certificate at Theorem 1's point, and the recovery's conditioning.
 void certify_result(const Plant& plant, const certify::Theorem1Point& pt, const Settings& settings,
                     SynthesisResult& res) {
-  certify_at_point(plant, certify::theorem1_matrix(plant, pt), pt.g, settings, res);
+  certify_at_point(plant, certify::theorem1_matrix(plant, pt), pt.g, settings, pt.lambda, res);
   Certificate& cert = res.certificate;
   const VectorXd eig_S = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.S, Eigen::EigenvaluesOnly).eigenvalues();
   const VectorXd eig_RS =
@@ -205,7 +205,8 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
   const double f = sc.gamma_factor();
   res.bound = bound_statement(res.filter.form, user_plant.uncertain());
   if (user_plant.structured())
-    res.bound += "; F = diag(F_1, ..., F_" + std::to_string(user_plant.F_blocks.size()) +
+    res.bound += "; F = diag(F_1, " + std::string(user_plant.F_blocks.size() > 2 ? "..., " : "") + "F_" +
+                 std::to_string(user_plant.F_blocks.size()) +
                  "), each ||F_b(k)|| <= 1, one S-procedure multiplier per block (docs/maths.md §23)";
   res.filter = user_filter(res.filter, sc);
   res.certificate = in_user_units(res.certificate, sc, res.filter);

@@ -55,7 +55,10 @@ class ScaledBoundedReal {
   // (enough for the check); false: minimise ‖G_λ‖∞ over λ (to show how far from
   // feasible γ is). A plant without uncertainty has no multiplier: the test is
   // ‖C̄(zI − Ā)⁻¹B̄‖∞ < γ.
-  ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true);
+  // F block-diagonal: `start` (one positive multiplier per block, e.g. a synthesis's; may be
+  // empty) gives the blocks' weights the search starts from, instead of all equal.
+  ScaledBoundedRealTest test(double gamma, bool stop_when_feasible = true,
+                             const Eigen::VectorXd& start = Eigen::VectorXd());
 
   // The smallest γ (to relative accuracy rel_tol, rounded up) with ‖G_λ‖∞ < 1 at the
   // fixed multiplier lambda, by regula falsi (Illinois) on (gamma_lo, gamma_hi]: gamma_hi
