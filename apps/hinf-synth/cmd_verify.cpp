@@ -6,6 +6,18 @@
 #include "hinf/synth/regression.hpp"
 
 namespace hinf::cli {
+namespace {
+
+// "multiplier λ", or with F block-diagonal "multipliers [λ₁, λ₂] (one per block of F)".
+std::string multipliers_text(const synth::Certificate& c) {
+  if (c.robust_block_multipliers.size() == 0) return "multiplier " + num(c.robust_multiplier);
+  std::string out = "multipliers [";
+  for (Eigen::Index b = 0; b < c.robust_block_multipliers.size(); ++b)
+    out += (b ? ", " : "") + num(c.robust_block_multipliers(b));
+  return out + "] (one per block of F)";
+}
+
+}  // namespace
 
 void add_verify(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config");
@@ -35,8 +47,8 @@ void add_verify(CLI::App& app, Action& action) {
         std::cout << "nominal Hinf norm     " << num(c.hinf_norm_nominal) << (c.hinf_norm_ok ? " <= gamma" : " > gamma  FAIL") << "\n"
                   << "robust analysis LMI   "
                   << (c.robust_feasible_at_gamma
-                          ? "feasible at gamma (S-procedure multiplier " + num(c.robust_multiplier) +
-                                ", scaled norm " + num(c.robust_scaled_norm) + " < 1; feasible down to " +
+                          ? "feasible at gamma (S-procedure " + multipliers_text(c) + ", scaled norm " +
+                                num(c.robust_scaled_norm) + " < 1; feasible down to " +
                                 num(c.robust_bound) + ")"
                           : "infeasible at gamma (best scaled norm " + num(c.robust_scaled_norm) + " >= 1)  FAIL")
                   << "\n";
