@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "admissible_f.hpp"
 #include "gaussian_source.hpp"
 #include "hinf/certify/balance.hpp"
 #include "hinf/certify/error_system.hpp"
@@ -23,20 +24,6 @@ void add_sample(const Plant& plant, const Filter& filter, const Eigen::MatrixXd&
     out.worst_F = F.size() > 0 ? F : Eigen::MatrixXd::Zero(plant.j(), plant.k());
   }
   ++out.samples;
-}
-
-// F's admissible set when F is block-diagonal (docs/maths.md §23): F outside the blocks is
-// zeroed, and with `normalise` each nonzero block is scaled to ‖F_b‖₂ = 1.
-Eigen::MatrixXd on_blocks(const Plant& plant, const Eigen::MatrixXd& F, bool normalise) {
-  if (!plant.structured()) return F;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(F.rows(), F.cols());
-  for (const auto& [at, size] : plant.F_block_ranges()) {
-    Eigen::MatrixXd block = F.block(at, at, size, size);
-    const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(block).singularValues()(0);
-    if (normalise && norm > 0) block /= norm;
-    out.block(at, at, size, size) = block;
-  }
-  return out;
 }
 
 }  // namespace
@@ -69,7 +56,7 @@ std::vector<Eigen::MatrixXd> admissible_samples(const Plant& plant, int random_s
     for (Eigen::Index b = 0; b < k; ++b) {
       Eigen::MatrixXd F = Eigen::MatrixXd::Zero(j, k);
       F(a, b) = 1.0;
-      if (on_blocks(plant, F, false)(a, b) == 0) continue;  // outside F's blocks: not admissible
+      if (detail::onto_blocks(plant, F, detail::BlockNorm::Kept)(a, b) == 0) continue;  // outside F's blocks: not admissible
       Fs.push_back(F);
       Fs.push_back(-F);
     }
@@ -80,7 +67,7 @@ std::vector<Eigen::MatrixXd> admissible_samples(const Plant& plant, int random_s
     for (Eigen::Index c = 0; c < k; ++c)
       for (Eigen::Index r = 0; r < j; ++r) G(r, c) = gauss.next();
     if (plant.structured()) {
-      Fs.push_back(on_blocks(plant, G, true));  // each ‖F_b‖₂ = 1
+      Fs.push_back(detail::onto_blocks(plant, G, detail::BlockNorm::One));  // each ‖F_b‖₂ = 1
       continue;
     }
     const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(0);
@@ -107,7 +94,7 @@ StabilitySample sampled_robust_stability(const Plant& plant, const Filter& filte
                     "sampled_robust_stability: F[" + std::to_string(i) + "] is " +
                         std::to_string(F.rows()) + "×" + std::to_string(F.cols()) + ", expected " +
                         std::to_string(plant.H.cols()) + "×" + std::to_string(plant.E.rows()));
-      if (on_blocks(plant, F, false) != F)
+      if (detail::onto_blocks(plant, F, detail::BlockNorm::Kept) != F)
         throw Error(ErrorCode::InvalidInput, "sampled_robust_stability: F[" + std::to_string(i) +
                                                  "] is not block-diagonal as F's blocks are (not admissible)");
       const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(F).singularValues()(0);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "admissible_f.hpp"
 #include "gaussian_source.hpp"
 #include "hinf/certify/error_system.hpp"
 #include "hinf/certify/hinf_norm.hpp"
@@ -19,20 +20,6 @@ constexpr double kNormTolerance = 1e-8;
 constexpr double kInitialStep = 0.5;
 constexpr int kMissesPerHalving = 8;
 constexpr int kTrials = 200;
-
-// F projected into the admissible set: each block (the whole F if one block) scaled down
-// to spectral norm 1 when above it, nothing outside the blocks.
-Eigen::MatrixXd admissible(const Plant& plant, const Eigen::MatrixXd& F) {
-  const auto at_most_one = [](Eigen::MatrixXd M) {
-    const double norm = Eigen::JacobiSVD<Eigen::MatrixXd>(M).singularValues()(0);
-    if (norm > 1) M /= norm;
-    return M;
-  };
-  if (!plant.structured()) return at_most_one(F);
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(F.rows(), F.cols());
-  for (const auto& [at, size] : plant.F_block_ranges()) out.block(at, at, size, size) = at_most_one(F.block(at, at, size, size));
-  return out;
-}
 
 // σ_max at the peak of the error system at F; +inf if it is not Schur stable.
 double gain_at(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& F, int& evaluations) {
@@ -60,7 +47,7 @@ WorstCaseGain worst_case_gain(const Plant& plant, const Filter& filter, int rand
   for (int t = 0; t < kTrials && step > 1e-6; ++t) {
     Eigen::MatrixXd D(out.worst_F.rows(), out.worst_F.cols());
     for (Eigen::Index i = 0; i < D.size(); ++i) D(i) = normal.next();
-    const Eigen::MatrixXd F = admissible(plant, out.worst_F + step * D / D.norm());
+    const Eigen::MatrixXd F = detail::onto_blocks(plant, out.worst_F + step * D / D.norm(), detail::BlockNorm::AtMostOne);
     const double g = gain_at(plant, filter, F, out.evaluations);
     if (g > out.gain) {
       out.gain = g, out.worst_F = F, misses = 0;
