@@ -54,6 +54,12 @@ hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Pla
     f.form = hinf::FilterForm::Observer;
     f.K = g.K;
   }
+  if (g.filtered) {  // docs/maths.md (140)
+    need("M", g.M, plant.n(), plant.m());
+    need("D_F", g.D_F, plant.l(), plant.m());
+    f.M = g.M;
+    f.D_F = g.D_F;
+  }
   return f;
 }
 

@@ -1,4 +1,5 @@
-// hinf-synth kalman CONFIG -o GAINS.yaml: the Kalman predictor of the config's plant.
+// hinf-synth kalman CONFIG -o GAINS.yaml: the Kalman predictor of the config's plant (or, with
+// filter.estimate: filtered, the Kalman filter x̂(k|k), docs/maths.md (143)).
 #include <iostream>
 
 #include "cli_support.hpp"
@@ -11,7 +12,7 @@ namespace hinf::cli {
 void add_kalman(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand(
       "kalman", "the Kalman one-step predictor of the config's nominal plant (Q = B B^T, R = D D^T, or the config's kalman: {Q, R}), certified at the "
-                "worst-case gain it achieves: the H2 reference for the H-infinity filter");
+                "worst-case gain it achieves: the H2 reference for the H-infinity filter (filter.estimate: filtered: the Kalman filter x_hat(k|k))");
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   cmd->add_option("config", *config, "config YAML (system matrices or hill model)")->required();
@@ -21,7 +22,8 @@ void add_kalman(CLI::App& app, Action& action) {
       const synth::SynthConfig cfg = synth::load_config(*config);
       const synth::SynthesisResult r = synth::kalman_predictor(cfg.plant, cfg.settings, cfg.kalman_noise);
       hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256, cfg.sample_time()}), {*config});
-      std::cout << "Kalman predictor: worst-case gain gamma = " << num(r.gamma) << " (certified; nominal Hinf norm "
+      std::cout << (r.filter.filtered() ? "Kalman filter x_hat(k|k)" : "Kalman predictor")
+                << ": worst-case gain gamma = " << num(r.gamma) << " (certified; nominal Hinf norm "
                 << num(r.certificate.hinf_norm_nominal) << "), RMS error under unit white noise (H2 norm) "
                 << num(r.certificate.h2_norm_nominal) << "; gains written to " << *output << "\n";
       return 0;

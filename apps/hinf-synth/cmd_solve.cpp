@@ -48,7 +48,8 @@ void add_solve(CLI::App& app, Action& action) {
                 << num(r.solver.time_s) << " s]\n"
                 << "RMS error under unit white noise (H2 norm) " << num(r.certificate.h2_norm_nominal)
                 << " (compare: hinf-synth kalman)\n"
-                << "filter form: " << to_string(r.filter.form) << "; " << r.bound << "\n";
+                << "filter form: " << to_string(r.filter.form) << (r.filter.filtered() ? ", filtered estimate" : "")
+                << "; " << r.bound << "\n";
       return 0;
     };
   });

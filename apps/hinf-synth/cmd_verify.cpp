@@ -8,6 +8,15 @@
 namespace hinf::cli {
 namespace {
 
+// "(A_F, B_F, C_F, G_F = A - K C, K, L, G to 1e-16)" or "(NOT A - K C, K, L, G: relative
+// difference ...)" above 1e-12; for a filtered estimate with C_F, D_F = L - L M C, L M (docs/maths.md (140)).
+std::string observer_realisation_text(const hinf::Filter& f, double mismatch) {
+  const std::string names = f.filtered() ? "A_F, B_F, C_F, D_F, G_F" : "A_F, B_F, C_F, G_F";
+  const std::string values = f.filtered() ? "A - K C, K, L - L M C, L M, G" : "A - K C, K, L, G";
+  return mismatch <= 1e-12 ? " (" + names + " = " + values + " to " + num(mismatch) + ")"
+                           : " (NOT " + values + ": relative difference " + num(mismatch) + ")";
+}
+
 // "multiplier λ", or with F block-diagonal "multipliers [λ₁, λ₂] (one per block of F)".
 std::string multipliers_text(const synth::Certificate& c) {
   if (c.robust_block_multipliers.size() == 0) return "multiplier " + num(c.robust_multiplier);
@@ -33,12 +42,9 @@ void add_verify(CLI::App& app, Action& action) {
       const synth::Verification v = synth::verify_gains(cfg, f, *g.gamma);
       const synth::Certificate& c = v.certificate;
       std::cout << "claimed gamma         " << num(*g.gamma) << "\n"
-                << "filter form           " << to_string(f.form)
-                << (f.form == hinf::FilterForm::Observer
-                        ? std::string(c.observer_mismatch <= 1e-12 ? " (A_F, B_F, C_F, G_F = A - K C, K, L, G to "
-                                                                   : " (NOT A - K C, K, L, G: relative difference ") +
-                              num(c.observer_mismatch) + ")"
-                        : std::string())
+                << "filter form           " << to_string(f.form) << (f.filtered() ? ", filtered estimate" : "")
+                << (f.form == hinf::FilterForm::Observer ? observer_realisation_text(f, c.observer_mismatch)
+                                                         : std::string())
                 << "\n"
                 << "schur stable          " << (c.schur_stable ? "yes" : "NO") << " (spectral radius nominal "
                 << num(c.spectral_radius_nominal) << ", sampled max " << num(c.spectral_radius_sampled_max)

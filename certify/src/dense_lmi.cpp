@@ -96,7 +96,12 @@ MatrixXd observer_lmi_matrix(const hinf::Plant& P, const ObserverPoint& x) {
   M.set(0, 3, -x.Y * P.D);
   const MultiplierTerms mt = unc ? multiplier_terms(P, x.lambda) : MultiplierTerms{MatrixXd::Zero(n, n), MatrixXd()};
   M.set(1, 1, -x.P + mt.EtLE);
-  M.set(1, 4, P.L.transpose());
+  if (x.N.size() == 0) {
+    M.set(1, 4, P.L.transpose());
+  } else {  // filtered variant (142): output row (L − N C, 0, −N D)
+    M.set(1, 4, (P.L - x.N * P.C).transpose());
+    M.set(3, 4, -(x.N * P.D).transpose());
+  }
   M.set(2, 2, -x.g * MatrixXd::Identity(p, p));
   M.set(3, 3, -x.g * MatrixXd::Identity(q, q));
   M.set(4, 4, -MatrixXd::Identity(l, l));

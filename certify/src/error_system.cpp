@@ -20,9 +20,10 @@ std::string dims(const Eigen::MatrixXd& M) {
 }
 
 // The observer-form error system (122)–(123): e = x − x̂ with x̂(k+1) = A x̂ + G u + K(y − C x̂),
-//     e(k+1) = (A + ΔA − K C) e + B w − K D v,   z − ẑ = L e,
-// from the plant and the gain K alone (the realisation A_F, B_F, C_F, G_F is checked
-// against it by observer_form_mismatch).
+//     e(k+1) = (A + ΔA − K C) e + B w − K D v,   z − ẑ = L e                (predictor)
+//     z − ẑ(k|k) = (L − N C) e − N D v,  N = L M                            (filtered, (141))
+// from the plant and the gains K (and M) alone (the realisation A_F, B_F, C_F, D_F, G_F is
+// checked against it by observer_form_mismatch).
 StateSpace observer_error_system(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& A_delta) {
   const Eigen::Index n = plant.A.rows(), p = plant.B.cols(), m = plant.C.rows(), q = plant.D.cols();
   require(filter.K.rows() == n && filter.K.cols() == m,
@@ -31,8 +32,17 @@ StateSpace observer_error_system(const Plant& plant, const Filter& filter, const
   s.A = A_delta - filter.K * plant.C;
   s.B.resize(n, p + q);
   s.B << plant.B, -filter.K * plant.D;
-  s.C = plant.L;
   s.D = Eigen::MatrixXd::Zero(plant.L.rows(), p + q);
+  if (!filter.filtered()) {
+    s.C = plant.L;
+    return s;
+  }
+  require(filter.M.rows() == n && filter.M.cols() == m,
+          "filtered-observer gain M is " + dims(filter.M) + ", expected " + std::to_string(n) + "×" +
+              std::to_string(m));
+  const Eigen::MatrixXd N = plant.L * filter.M;
+  s.C = plant.L - N * plant.C;
+  s.D.rightCols(q) = -N * plant.D;
   return s;
 }
 
@@ -61,6 +71,8 @@ StateSpace error_system(const Plant& plant, const Filter& filter, const Eigen::M
     A_delta += plant.H * F * plant.E;  // A + ΔA, ΔA = H F E
   }
   if (filter.form == FilterForm::Observer) return observer_error_system(plant, filter, A_delta);
+  require(filter.D_F.size() == 0 && filter.M.size() == 0,
+          "only an observer-form filter has a filtered variant (M, D_F)");
 
   StateSpace s;
   s.A = Eigen::MatrixXd::Zero(n + nf, n + nf);  // Ā = [A+ΔA, 0; B_F C, A_F]
@@ -77,10 +89,9 @@ StateSpace error_system(const Plant& plant, const Filter& filter, const Eigen::M
 }
 
 double observer_form_mismatch(const Plant& plant, const Filter& filter) {
-  const Eigen::Index n = plant.A.rows(), m = plant.C.rows();
+  const Eigen::Index n = plant.A.rows(), m = plant.C.rows(), l = plant.L.rows();
   if (filter.K.rows() != n || filter.K.cols() != m || filter.A_F.rows() != n || filter.A_F.cols() != n ||
-      filter.B_F.rows() != n || filter.B_F.cols() != m || filter.C_F.rows() != plant.L.rows() ||
-      filter.C_F.cols() != n)
+      filter.B_F.rows() != n || filter.B_F.cols() != m || filter.C_F.rows() != l || filter.C_F.cols() != n)
     return INFINITY;
   const Eigen::MatrixXd G = plant.G.size() > 0 ? plant.G : Eigen::MatrixXd::Zero(n, 0);
   const Eigen::MatrixXd GF = filter.G_F.size() > 0 ? filter.G_F : Eigen::MatrixXd::Zero(n, 0);
@@ -93,9 +104,18 @@ double observer_form_mismatch(const Plant& plant, const Filter& filter) {
       w = std::max(w, std::abs(diff(i)) / std::max(scale(i), 1e-300));
     return w;
   };
-  return std::max({worst(filter.A_F - (plant.A - filter.K * plant.C), scale_A),
-                   worst(filter.B_F - filter.K, filter.K.cwiseAbs()),
-                   worst(filter.C_F - plant.L, plant.L.cwiseAbs()), worst(GF - G, G.cwiseAbs())});
+  double mismatch = std::max({worst(filter.A_F - (plant.A - filter.K * plant.C), scale_A),
+                              worst(filter.B_F - filter.K, filter.K.cwiseAbs()), worst(GF - G, G.cwiseAbs())});
+  if (!filter.filtered()) {
+    if (filter.D_F.size() > 0) return INFINITY;
+    return std::max(mismatch, worst(filter.C_F - plant.L, plant.L.cwiseAbs()));
+  }
+  // filtered variant (140): C_F = L − L M C, D_F = L M
+  if (filter.M.rows() != n || filter.M.cols() != m || filter.D_F.rows() != l || filter.D_F.cols() != m)
+    return INFINITY;
+  const Eigen::MatrixXd N = plant.L * filter.M, scale_N = plant.L.cwiseAbs() * filter.M.cwiseAbs();
+  return std::max({mismatch, worst(filter.D_F - N, scale_N),
+                   worst(filter.C_F - (plant.L - N * plant.C), plant.L.cwiseAbs() + scale_N * plant.C.cwiseAbs())});
 }
 
 }  // namespace hinf::certify

@@ -19,7 +19,10 @@ void validate_filter(const Filter& f, const char* name) {
     msg << "filter " << name << ": inconsistent dimensions (A_F " << f.A_F.rows() << "×"
         << f.A_F.cols() << ", B_F " << f.B_F.rows() << "×" << f.B_F.cols() << ", C_F "
         << f.C_F.rows() << "×" << f.C_F.cols() << ")";
-  else if (!f.A_F.allFinite() || !f.B_F.allFinite() || !f.C_F.allFinite())
+  else if (f.D_F.size() > 0 && (f.D_F.rows() != f.C_F.rows() || f.D_F.cols() != f.B_F.cols()))
+    msg << "filter " << name << ": D_F is " << f.D_F.rows() << "×" << f.D_F.cols() << ", expected "
+        << f.C_F.rows() << "×" << f.B_F.cols();
+  else if (!f.A_F.allFinite() || !f.B_F.allFinite() || !f.C_F.allFinite() || !f.D_F.allFinite())
     msg << "filter " << name << ": non-finite entry";
   if (!msg.str().empty()) throw Error(ErrorCode::InvalidInput, "compare_filters: " + msg.str());
   const double rho = spectral_radius(f.A_F);
@@ -51,12 +54,15 @@ FilterDifference compare_filters(const Filter& a, const Filter& b, double rel_to
   diff.B << a.B_F, b.B_F;
   diff.C.resize(l, na + nb);
   diff.C << a.C_F, -b.C_F;
-  diff.D = Eigen::MatrixXd::Zero(l, m);
+  // the feedthrough of a filtered estimate (docs/maths.md (140)); zero for a predictor
+  const auto feedthrough = [&](const Filter& f) {
+    return f.D_F.size() > 0 ? Eigen::MatrixXd(f.D_F) : Eigen::MatrixXd::Zero(l, m);
+  };
+  diff.D = feedthrough(a) - feedthrough(b);
 
   FilterDifference out;
   out.hinf_norm_difference = discrete_hinf_norm(diff, rel_tol).norm;
-  out.reference_norm =
-      discrete_hinf_norm(a.A_F, a.B_F, a.C_F, Eigen::MatrixXd::Zero(l, m), rel_tol).norm;
+  out.reference_norm = discrete_hinf_norm(a.A_F, a.B_F, a.C_F, feedthrough(a), rel_tol).norm;
   if (out.reference_norm > 0) out.relative = out.hinf_norm_difference / out.reference_norm;
   else out.relative = out.hinf_norm_difference > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   return out;

@@ -91,9 +91,49 @@ std::optional<Eigen::MatrixXd> stabilising_dare_solution(const Eigen::MatrixXd& 
   return Eigen::MatrixXd(0.5 * (X + X.transpose()));
 }
 
+
+// The observer-form predictor x̂(k+1) = A x̂ + G u + K (y − C x̂) (docs/maths.md (121)).
+Filter observer_filter(const Plant& plant, const Eigen::MatrixXd& K) {
+  Filter f;
+  f.form = FilterForm::Observer;
+  f.K = K;
+  f.A_F = plant.A - K * plant.C;
+  f.B_F = K;
+  f.C_F = plant.L;
+  f.G_F = plant.G.size() > 0 ? plant.G : Eigen::MatrixXd::Zero(plant.n(), 0);
+  return f;
+}
+
+// The a posteriori condition (ii') and central filter (143) from the stabilising P in `out`.
+HinfPredictorLevel central_filtered(const Plant& plant, double gamma, const Eigen::MatrixXd& R,
+                                    HinfPredictorLevel out) {
+  const Eigen::MatrixXd& P = out.P;
+  const Eigen::MatrixXd& C = plant.C;
+  const Eigen::MatrixXd& L = plant.L;
+  const Eigen::LLT<Eigen::MatrixXd> Re(R + C * P * C.transpose());
+  const Eigen::MatrixXd M = Re.solve(C * P).transpose();  // M = P Cᵀ (R + C P Cᵀ)⁻¹
+  if (std::isinf(gamma)) {
+    out.min_eig_gamma2_minus_LPL = std::numeric_limits<double>::infinity();
+  } else {
+    const Eigen::MatrixXd Pf = P - M * C * P;
+    const Eigen::MatrixXd W = gamma * gamma * Eigen::MatrixXd::Identity(L.rows(), L.rows()) - L * Pf * L.transpose();
+    out.min_eig_gamma2_minus_LPL = min_eigenvalue(0.5 * (W + W.transpose()));
+    if (!(out.min_eig_gamma2_minus_LPL > 0)) {
+      out.reason = "a posteriori condition γ²I − L P_f Lᵀ > 0 violated";
+      return out;
+    }
+  }
+  out.filter = observer_filter(plant, plant.A * M);
+  out.filter.M = M;
+  out.filter.D_F = L * M;
+  out.filter.C_F = L - out.filter.D_F * C;
+  out.feasible = true;
+  return out;
+}
+
 }  // namespace
 
-HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
+HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma, Estimate estimate) {
   validate_nominal(plant);
   if (!(gamma > 0)) throw Error(ErrorCode::InvalidInput, "H∞ predictor Riccati: gamma must be > 0");
   const Eigen::Index n = plant.A.rows(), l = plant.L.rows();
@@ -133,6 +173,7 @@ HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
     out.reason = "stabilising solution P is not positive semidefinite";
     return out;
   }
+  if (estimate == Estimate::Filtered) return central_filtered(plant, gamma, R, std::move(out));
   Eigen::MatrixXd Ptilde = P;  // P̃ = (P⁻¹ − γ⁻² LᵀL)⁻¹
   if (kalman) {
     out.min_eig_gamma2_minus_LPL = std::numeric_limits<double>::infinity();
@@ -149,20 +190,16 @@ HinfPredictorLevel hinf_predictor_at_level(const Plant& plant, double gamma) {
   // K = A P̃ Cᵀ (R + C P̃ Cᵀ)⁻¹, computed as Kᵀ = (R + C P̃ Cᵀ)⁻¹ C P̃ Aᵀ.
   const Eigen::MatrixXd Re = R + C * Ptilde * C.transpose();
   const Eigen::MatrixXd K = Re.llt().solve(C * Ptilde * A.transpose()).transpose();
-  out.filter.form = FilterForm::Observer;  // (59): x̂(k+1) = A x̂ + G u + K (y − C x̂)
-  out.filter.K = K;
-  out.filter.A_F = A - K * C;
-  out.filter.B_F = K;
-  out.filter.C_F = L;
-  out.filter.G_F = plant.G.size() > 0 ? plant.G : Eigen::MatrixXd::Zero(n, 0);
+  out.filter = observer_filter(plant, K);  // (59): x̂(k+1) = A x̂ + G u + K (y − C x̂)
   out.feasible = true;
   return out;
 }
 
-HinfPredictorOptimum optimal_hinf_predictor(const Plant& plant, double rel_tol) {
+HinfPredictorOptimum optimal_hinf_predictor(const Plant& plant, double rel_tol, Estimate estimate) {
   if (!(rel_tol > 0 && rel_tol < 1))
     throw Error(ErrorCode::InvalidInput, "optimal_hinf_predictor: rel_tol must be in (0, 1)");
-  const HinfPredictorLevel kalman = hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity());
+  const HinfPredictorLevel kalman =
+      hinf_predictor_at_level(plant, std::numeric_limits<double>::infinity(), estimate);
   if (!kalman.feasible)
     throw Error(ErrorCode::NumericalFailure, "optimal_hinf_predictor: Kalman predictor DARE failed: " + kalman.reason);
   Plant nominal = plant;
@@ -172,15 +209,15 @@ HinfPredictorOptimum optimal_hinf_predictor(const Plant& plant, double rel_tol) 
 
   HinfPredictorOptimum out;
   double lo = 0;
-  {
+  if (estimate == Estimate::Predicted) {
     const Eigen::MatrixXd LB = plant.L * plant.B;
     if (LB.size() > 0) lo = Eigen::JacobiSVD<Eigen::MatrixXd>(LB).singularValues()(0);
   }
   double hi = std::max(gamma_kalman * (1 + 1e-6), lo * (1 + rel_tol));
-  HinfPredictorLevel at_hi = hinf_predictor_at_level(plant, hi);
+  HinfPredictorLevel at_hi = hinf_predictor_at_level(plant, hi, estimate);
   for (int i = 0; i < 60 && !at_hi.feasible; ++i) {
     hi *= 2;
-    at_hi = hinf_predictor_at_level(plant, hi);
+    at_hi = hinf_predictor_at_level(plant, hi, estimate);
   }
   if (!at_hi.feasible)
     throw Error(ErrorCode::NumericalFailure,
@@ -188,7 +225,7 @@ HinfPredictorOptimum optimal_hinf_predictor(const Plant& plant, double rel_tol) 
   int steps = 0;
   while (hi > lo * (1 + rel_tol) && steps < 200 && hi > 1e-300) {
     const double mid = lo > 0 ? std::sqrt(lo * hi) : 0.5 * hi;
-    HinfPredictorLevel at_mid = hinf_predictor_at_level(plant, mid);
+    HinfPredictorLevel at_mid = hinf_predictor_at_level(plant, mid, estimate);
     if (at_mid.feasible) { hi = mid; at_hi = std::move(at_mid); }
     else lo = mid;
     ++steps;
@@ -200,8 +237,8 @@ HinfPredictorOptimum optimal_hinf_predictor(const Plant& plant, double rel_tol) 
   return out;
 }
 
-double optimal_hinf_predictor_gamma(const Plant& plant, double rel_tol) {
-  return optimal_hinf_predictor(plant, rel_tol).gamma;
+double optimal_hinf_predictor_gamma(const Plant& plant, double rel_tol, Estimate estimate) {
+  return optimal_hinf_predictor(plant, rel_tol, estimate).gamma;
 }
 
 }  // namespace hinf::certify

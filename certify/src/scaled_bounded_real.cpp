@@ -82,6 +82,7 @@ ScaledBoundedReal::ScaledBoundedReal(const hinf::Plant& plant, const hinf::State
 hinf::certify::HinfNorm ScaledBoundedReal::scaled_hinf_norm(double gamma, double lambda, double norm_tolerance) {
   const int n = plant_.n();
   B_.leftCols(pq_) = e_.B / gamma;
+  D_.topLeftCorner(plant_.l(), pq_) = e_.D / gamma;  // the filtered observer's feedthrough (141)
   if (plant_.uncertain() && !plant_.structured()) {
     const double r = std::sqrt(lambda);  // H̄/√λ and √λ Ē
     B_.block(0, pq_, n, plant_.j()) = plant_.H / r;

@@ -307,6 +307,11 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
                 "the filter has a known input (filter.G_F, " + std::to_string(gains.G_F.cols()) +
                     " columns), which the generated C does not take yet: its step function has no u argument, "
                     "and C without it would fly a different filter; use the runtime's LtiFilter::step(y, u)");
+  if (gains.filtered)
+    throw Error(ErrorCode::InvalidInput,
+                "the filter gives a filtered estimate (filter.estimate: filtered, feedthrough filter.D_F), which the "
+                "generated C does not take yet: its output is C_F x_F(k) only, and C without D_F y(k) would fly a "
+                "different filter; use the runtime's LtiFilter with D_F");
 
   const FilterData data = detail::make_filter_data(gains, options.real);
   const TestVectors tv = detail::make_test_vectors(data, options.real,

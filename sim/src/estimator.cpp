@@ -14,12 +14,12 @@ namespace rt = hinf::runtime;
 
 class LtiEstimator final : public Estimator {
  public:
-  LtiEstimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F, const Vector6& z0)
-      : filter_(A_F, B_F, C_F) {
+  LtiEstimator(const LtiGains& g, const Vector6& z0)
+      : filter_(g.A_F, g.B_F, g.C_F, Matrix::Zero(g.A_F.rows(), 0), g.D_F) {
     filter_.init(z0);
   }
   Vector6 estimate(const MeasurementSample& y, double /*t*/) override {
-    return filter_.step(y.cartesian);  // z_F(k), then x_F(k+1) = A_F x_F(k) + B_F y(k)
+    return filter_.step(y.cartesian);  // z_F(k) (+ D_F y(k)), then x_F(k+1) = A_F x_F(k) + B_F y(k)
   }
   void advance(const Vector3&, double) override {}
 
@@ -71,9 +71,8 @@ class EkfEstimator final : public Estimator {
 
 }  // namespace
 
-std::unique_ptr<Estimator> make_lti_estimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F,
-                                              const Vector6& z0) {
-  return std::make_unique<LtiEstimator>(A_F, B_F, C_F, z0);
+std::unique_ptr<Estimator> make_lti_estimator(const LtiGains& gains, const Vector6& z0) {
+  return std::make_unique<LtiEstimator>(gains, z0);
 }
 
 KalmanSettings kalman_settings_from(const Scenario& s, bool knows_thrust) {

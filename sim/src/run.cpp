@@ -27,9 +27,9 @@ namespace {
 std::vector<std::unique_ptr<Estimator>> make_estimators(const RunSetup& setup) {
   const Scenario& s = setup.scenario;
   std::vector<std::unique_ptr<Estimator>> estimators;
-  if (s.filters.hinf) estimators.push_back(make_lti_estimator(setup.hinf->A_F, setup.hinf->B_F, setup.hinf->C_F, s.initial_estimate));
+  if (s.filters.hinf) estimators.push_back(make_lti_estimator(*setup.hinf, s.initial_estimate));
   if (s.filters.published)
-    estimators.push_back(make_lti_estimator(setup.published->A_F, setup.published->B_F, setup.published->C_F, s.initial_estimate));
+    estimators.push_back(make_lti_estimator(*setup.published, s.initial_estimate));
   if (s.filters.ekf) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, true)));
   if (s.filters.ekf_no_control) estimators.push_back(make_ekf_estimator(s, kalman_settings_from(s, false)));
   if (s.filters.rekf) estimators.push_back(make_rekf_estimator(s, kalman_settings_from(s, true), *s.filters.rekf));

@@ -37,7 +37,9 @@ Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const S
   if (points < 2) throw Error(ErrorCode::InvalidInput, "--points = " + std::to_string(points) + ": must be >= 2");
   Comparison c;
   c.filter = figures(plant, filter, settings);
-  const SynthesisResult k = kalman_predictor(plant, settings, noise);
+  Settings same_estimate = settings;  // the Kalman filter that estimates what the filter does (§18.6)
+  same_estimate.estimate = filter.filtered() ? Estimate::Filtered : Estimate::Predicted;
+  const SynthesisResult k = kalman_predictor(plant, same_estimate, noise);
   c.kalman = figures(plant, k.filter, settings);
   c.theta = certify::frequency_grid(points, {c.filter.hinf_peak_theta, c.kalman.hinf_peak_theta});
   c.filter.sigma = certify::sigma_max_on_grid(certify::error_system(plant, filter), c.theta);

@@ -133,10 +133,13 @@ std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& p
   if (!r.bound.empty()) kv(out, "bound", r.bound);
   out << YAML::Key << "filter" << YAML::Value << YAML::BeginMap;
   kv(out, "form", to_string(r.filter.form));
+  if (r.filter.filtered()) kv(out, "estimate", to_string(Estimate::Filtered));  // docs/maths.md §18.6
   emit_matrix(out, "A_F", r.filter.A_F);
   emit_matrix(out, "B_F", r.filter.B_F);
   emit_matrix(out, "C_F", r.filter.C_F);
+  if (r.filter.filtered()) emit_matrix(out, "D_F", r.filter.D_F);
   if (r.filter.form == FilterForm::Observer) emit_matrix(out, "K", r.filter.K);
+  if (r.filter.filtered()) emit_matrix(out, "M", r.filter.M);
   if (r.filter.G_F.cols() > 0) emit_matrix(out, "G_F", r.filter.G_F);
   out << YAML::EndMap;
   emit_certificate(out, r.certificate, r.filter.form);

@@ -1,4 +1,5 @@
-// The Kalman one-step predictor as a gains file (docs/maths.md (133)): the reference the H∞
+// The Kalman one-step predictor (or, with filter.estimate: filtered, the Kalman filter's
+// x̂(k|k), (143) at γ = ∞) as a gains file (docs/maths.md (133)): the reference the H∞
 // filter is compared with — its RMS error under white noise is the least any predictor
 // achieves, its worst-case gain is what the H∞ design improves on.
 #include <cmath>
@@ -54,15 +55,17 @@ SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings, c
   if (noise.Q.size() > 0) design.B = models::covariance_factor(noise.Q);
   if (noise.R.size() > 0) design.D = models::covariance_factor(noise.R);
   const certify::HinfPredictorLevel kf =
-      certify::hinf_predictor_at_level(design, std::numeric_limits<double>::infinity());
+      certify::hinf_predictor_at_level(design, std::numeric_limits<double>::infinity(), settings.estimate);
   if (!kf.feasible)
     throw Error(ErrorCode::Infeasible,
                 "no stationary Kalman predictor: " + kf.reason +
                     " (the DARE needs (A, C) detectable and no mode on the unit circle unreached by the noise B)");
   SynthesisResult r;
   r.filter = kf.filter;
-  r.solver.method = "Kalman one-step predictor: stabilising DARE solution by ordered QZ (docs/maths.md (56)-(59) at "
-                    "gamma = infinity, " +
+  const bool filtered = settings.estimate == Estimate::Filtered;
+  r.solver.method = std::string(filtered ? "Kalman filter, estimate x_hat(k|k) (docs/maths.md (143)), "
+                                         : "Kalman one-step predictor: ") +
+                    "stabilising DARE solution by ordered QZ (docs/maths.md (56)-(59) at gamma = infinity, " +
                     std::string(noise.Q.size() > 0 ? "Q given" : "Q = B B^T") + ", " +
                     (noise.R.size() > 0 ? "R given" : "R = D D^T") + ")";
   const double nominal = certify::discrete_hinf_norm(certify::error_system(plant, r.filter), 1e-10).norm;
@@ -74,7 +77,7 @@ SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings, c
                 "the Kalman predictor's certificate failed at gamma = " + significant_text(claim, 10) + "; no gains written");
   r.gamma = claim;
   r.gamma_squared = claim * claim;
-  r.bound = bound_statement(FilterForm::Observer, plant.uncertain());
+  r.bound = bound_statement(FilterForm::Observer, plant.uncertain(), settings.estimate);
   return r;
 }
 

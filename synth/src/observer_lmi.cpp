@@ -9,7 +9,7 @@ using Eigen::MatrixXd;
 using hinf::Plant;
 
 namespace {
-ObserverLmi build(const Plant& P, const double* g_fixed) {
+ObserverLmi build(const Plant& P, const double* g_fixed, Estimate estimate) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l(), m = P.m();
   const bool unc = P.uncertain();
   std::vector<int> blocks{n, n, p, q, l};
@@ -19,6 +19,7 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
   auto& M = O.lmi;  // M(x), docs/maths.md (124)
   O.P = M.add_symmetric("P", n);
   O.Y = M.add_full("Y", n, m);
+  if (estimate == Estimate::Filtered) O.N = M.add_full("N", l, m);
   if (unc) O.lambda = declare_multipliers(M, P);
   if (!g_fixed) O.g = M.add_scalar("gamma_squared");
   else O.margin = M.add_scalar("margin");
@@ -35,6 +36,10 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
   M.add_term(1, 1, O.P, -In, In);
   if (unc) add_multiplier_EtE(M, P, O.lambda, P.E, 1);
   M.add_constant(1, 4, P.L.transpose());
+  if (O.N) {  // filtered (142): output row (L − N C, 0, −N D)
+    M.add_term(1, 4, *O.N, -P.C.transpose(), MatrixXd::Identity(l, l), /*transpose=*/true);
+    M.add_term(3, 4, *O.N, -P.D.transpose(), MatrixXd::Identity(l, l), /*transpose=*/true);
+  }
   // rows 3–6: −gI, −gI, −I, −λI
   if (g_fixed) {
     M.add_constant(2, 2, -*g_fixed * MatrixXd::Identity(p, p));
@@ -51,9 +56,11 @@ ObserverLmi build(const Plant& P, const double* g_fixed) {
 }
 }  // namespace
 
-ObserverLmi build_observer_lmi(const Plant& P) { return build(P, nullptr); }
+ObserverLmi build_observer_lmi(const Plant& P, Estimate estimate) { return build(P, nullptr, estimate); }
 
-ObserverLmi build_observer_lmi_backoff(const Plant& P, double g_fixed) { return build(P, &g_fixed); }
+ObserverLmi build_observer_lmi_backoff(const Plant& P, double g_fixed, Estimate estimate) {
+  return build(P, &g_fixed, estimate);
+}
 
 std::vector<lmi::SparseEntry> observer_basis_error(const ObserverLmi& O, const Plant& plant) {
   if (!plant.uncertain()) return {};
@@ -64,6 +71,7 @@ certify::ObserverPoint observer_point(const ObserverLmi& O, const Plant& plant, 
   certify::ObserverPoint pt;
   pt.P = O.lmi.value(O.P, x);
   pt.Y = O.lmi.value(O.Y, x);
+  if (O.N) pt.N = O.lmi.value(*O.N, x);
   pt.lambda = multiplier_values(O.lmi, O.lambda, x);
   pt.g = g;
   return pt;
@@ -80,6 +88,11 @@ hinf::Filter recover_observer(const certify::ObserverPoint& pt, const Plant& pla
   f.B_F = f.K;
   f.C_F = plant.L;
   f.G_F = plant.G.size() > 0 ? plant.G : MatrixXd::Zero(plant.n(), 0);
+  if (pt.N.size() > 0) {  // (144)
+    f.M = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(plant.L).solve(pt.N);
+    f.D_F = plant.L * f.M;
+    f.C_F = plant.L - f.D_F * plant.C;
+  }
   return f;
 }
 

@@ -1,6 +1,6 @@
 // The observer-form pipeline (docs/maths.md §18): pre-flight (detectability, (126)), the
-// LMI (124) by the barrier method, the optional γ back-off, recovery (125) and the
-// certificate of §7 on the error dynamics (122)–(123).
+// LMI (124) (or (142) for the filtered estimate) by the barrier method, the optional γ
+// back-off, recovery (125), (144) and the certificate of §7 on the error dynamics (122)–(123), (141).
 #include <cmath>
 #include <complex>
 #include <sstream>
@@ -68,10 +68,18 @@ void require_detectable(const Plant& plant, const VectorXd& state_scale) {
   }
 }
 
-void preflight_observer(const Plant& plant, const VectorXd& state_scale) {
+void preflight_observer(const Plant& plant, const VectorXd& state_scale, Estimate estimate) {
   if (plant.L.isZero(0.0))
     throw Error(ErrorCode::Infeasible,
                 "ill-posed: the estimated-output matrix L is zero, so there is no output to estimate and γ* = 0; nothing to synthesise");
+  if (estimate == Estimate::Filtered) {  // M = L⁺ N must give L M = N (docs/maths.md (144))
+    const Eigen::Index rank = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(plant.L).rank();
+    if (rank < plant.l())
+      throw Error(ErrorCode::InvalidInput,
+                  "filter.estimate: filtered needs L with independent rows (rank " + std::to_string(rank) + " < " +
+                      std::to_string(plant.l()) + " rows of system.L), so that the gain M of x̂(k|k) exists "
+                      "(docs/maths.md (144)); remove the dependent rows of L");
+  }
   require_detectable(plant, state_scale);
   if (plant.B.isZero(0.0) && certify::spectral_radius(plant.A) < 1.0)
     throw Error(ErrorCode::Infeasible,
@@ -83,8 +91,8 @@ void preflight_observer(const Plant& plant, const VectorXd& state_scale) {
 
 SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, const Settings& settings,
                                     const IterationObserver& observer) {
-  preflight_observer(plant, sc.state);
-  const ObserverLmi O = build_observer_lmi(plant);
+  preflight_observer(plant, sc.state, settings.estimate);
+  const ObserverLmi O = build_observer_lmi(plant, settings.estimate);
   const std::vector<lmi::SparseEntry> basis_error = observer_basis_error(O, plant);
   const sdp::Solution sol =
       solve_min_gamma(O.lmi, O.g, basis_error, settings, observer, "observer-form LMI",
@@ -96,11 +104,12 @@ SynthesisResult synthesize_observer(const Plant& plant, const PlantScaling& sc, 
   record_bracket(O.lmi, O.g, basis_error, sol, settings, sc.gamma_factor(), res.solver);
 
   const auto backoff = solve_gamma_backoff<ObserverLmi>(
-      sol, [&](double g2) { return build_observer_lmi_backoff(plant, g2); }, settings, observer, res.solver);
-  const certify::ObserverPoint pt =
-      backoff ? observer_point(backoff->problem, plant, backoff->solution.x, backoff->gamma_squared)
-              : observer_point(O, plant, sol.x, sol.objective);
+      sol, [&](double g2) { return build_observer_lmi_backoff(plant, g2, settings.estimate); }, settings, observer,
+      res.solver);
+  certify::ObserverPoint pt = backoff ? observer_point(backoff->problem, plant, backoff->solution.x, backoff->gamma_squared)
+                                      : observer_point(O, plant, sol.x, sol.objective);
   res.filter = recover_observer(pt, plant);
+  if (res.filter.filtered()) pt.N = res.filter.D_F;  // check 1 at the N = L M written, not the solver's N
   certify_at_point(plant, certify::observer_lmi_matrix(plant, pt), pt.g, settings, pt.lambda, res);
   const VectorXd eig_P = Eigen::SelfAdjointEigenSolver<MatrixXd>(pt.P, Eigen::EigenvaluesOnly).eigenvalues();
   res.certificate.cond_P = eig_P(eig_P.size() - 1) / eig_P(0);

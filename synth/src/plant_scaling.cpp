@@ -112,6 +112,8 @@ Filter scaled_filter(const Filter& F, const PlantScaling& s) {
   f.C_F = s.output * F.C_F * D;
   if (F.K.size() > 0) f.K = Dinv * F.K * Tinv;
   if (F.G_F.size() > 0) f.G_F = Dinv * F.G_F;
+  if (F.M.size() > 0) f.M = Dinv * F.M * Tinv;  // the filtered observer (140): M as K, D_F as C_F·B_F
+  if (F.D_F.size() > 0) f.D_F = s.output * F.D_F * Tinv;
   return f;
 }
 
@@ -125,6 +127,8 @@ Filter user_filter(const Filter& F, const PlantScaling& s) {
   f.C_F = F.C_F * Dinv / s.output;
   if (F.K.size() > 0) f.K = D * F.K * T;
   if (F.G_F.size() > 0) f.G_F = D * F.G_F;
+  if (F.M.size() > 0) f.M = D * F.M * T;
+  if (F.D_F.size() > 0) f.D_F = F.D_F * T / s.output;
   return f;
 }
 

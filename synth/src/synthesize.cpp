@@ -179,10 +179,12 @@ SynthesisResult synthesize_augmented(const Plant& plant, const PlantScaling& sc,
 }
 
 // The formulation to solve (docs/maths.md §18.4): Auto is Theorem 1's augmented filter for a
-// Schur-stable plant without a known input (the paper's problem), the observer form otherwise.
+// Schur-stable plant without a known input (the paper's problem) and the predicted estimate,
+// the observer form otherwise.
 FilterForm resolve_form(const Plant& plant, const Settings& settings) {
   if (settings.form == FormChoice::Augmented) return FilterForm::Augmented;
-  if (settings.form == FormChoice::Observer || plant.r() > 0) return FilterForm::Observer;
+  if (settings.form == FormChoice::Observer || plant.r() > 0 || settings.estimate == Estimate::Filtered)
+    return FilterForm::Observer;
   return certify::spectral_radius(plant.A) < 1.0 ? FilterForm::Augmented : FilterForm::Observer;
 }
 
@@ -203,7 +205,7 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
     throw Error(ErrorCode::NumericalFailure,
                 "certificate failed, no filter written:" + failed_checks(res.certificate, res.gamma));
   const double f = sc.gamma_factor();
-  res.bound = bound_statement(res.filter.form, user_plant.uncertain());
+  res.bound = bound_statement(res.filter.form, user_plant.uncertain(), settings.estimate);
   if (user_plant.structured())
     res.bound += "; F = diag(F_1, " + std::string(user_plant.F_blocks.size() > 2 ? "..., " : "") + "F_" +
                  std::to_string(user_plant.F_blocks.size()) +
@@ -215,7 +217,15 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
   return res;
 }
 
-std::string bound_statement(FilterForm form, bool uncertain) {
+std::string bound_statement(FilterForm form, bool uncertain, Estimate estimate) {
+  if (form == FilterForm::Observer && estimate == Estimate::Filtered)
+    return std::string("gamma bounds the l2 gain from (w, v) to z - z_hat(k|k) = (L - L M C) e - L M D v, the filtered ") +
+           "estimate z_hat(k|k) = L x_hat(k|k), x_hat(k|k) = x_hat + M (y - C x_hat), e = x - x_hat, for e(k+1) = (A" +
+           (uncertain ? " + H F E" : "") + " - K C) e + B w - K D v" +
+           (uncertain ? " and every ||F(k)|| <= 1: the uncertainty acting on the error dynamics; the plant's own H F E x "
+                        "term, unseen by the filter, is not covered"
+                      : "; the known input u cancels exactly") +
+           " (docs/maths.md (141))";
   if (form == FilterForm::Augmented)
     return uncertain ? "gamma bounds the l2 gain from (w, v) to e = z - z_F for every admissible F(k), ||F(k)|| <= 1, "
                        "of the plant's A + H F E (docs/maths.md (13))"
@@ -247,7 +257,8 @@ ProblemSize problem_size(const Plant& user_plant, const Settings& settings) {
   const Plant plant = scaled_plant(user_plant, choose_scaling(user_plant));
   ProblemSize size;
   size.form = resolve_form(plant, settings);
-  const lmi::LmiProblem lmi = size.form == FilterForm::Observer ? build_observer_lmi(plant).lmi : build_theorem1(plant).lmi;
+  const lmi::LmiProblem lmi =
+      size.form == FilterForm::Observer ? build_observer_lmi(plant, settings.estimate).lmi : build_theorem1(plant).lmi;
   size.lmi_order = lmi.order();
   size.variables = lmi.num_params();
   size.memory_mib = estimated_solve_mib(lmi);
@@ -259,9 +270,9 @@ std::string synthesis_sdpa(const Plant& plant, const Settings& settings, const s
   if (resolve_form(plant, settings) == FilterForm::Augmented)
     return theorem1_sdpa(plant, "Theorem-1 LMI (18) " + comment);
   const PlantScaling sc = uncertainty_split(plant);
-  const ObserverLmi O = build_observer_lmi(scaled_plant(plant, sc));
+  const ObserverLmi O = build_observer_lmi(scaled_plant(plant, sc), settings.estimate);
   return lmi::to_sdpa_sparse(O.lmi, O.lmi.cost_of(O.g),
-                             "observer-form LMI (124) " + comment + "\nvariable " +
+                             std::string(O.N ? "filtered observer-form LMI (142) " : "observer-form LMI (124) ") + comment + "\nvariable " +
                                  std::to_string(O.lmi.variable(O.g).offset + 1) + " is gamma^2; " + sc.summary());
 }
 

@@ -8,6 +8,10 @@
 #   verify exit 0; codegen exit 2 naming filter.G_F (its C has no u argument yet);
 # - kalman on the double integrator: a certified gains file whose H2 norm is below, and
 #   gamma above, the H∞ filter's.
+# - the filtered estimate x̂(k|k) of the double integrator (§18.6): solve exit 0 with
+#   estimate: filtered, D_F and M in the gains file and a gamma below the predictor's; verify
+#   exit 0, and exit 1 with D_F changed; codegen exit 2 naming filter.estimate; kalman gives
+#   the Kalman filter x̂(k|k); compare exit 0.
 set -u
 exe=$1 plants=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-observer-XXXXXX")
@@ -54,6 +58,35 @@ gam() { sed -n 's/^gamma: //p' "$1"; }
 python3 -c "import sys; k2, h2, kg, hg = map(float, sys.argv[1:]); sys.exit(0 if k2 <= h2 * (1 + 1e-9) and kg >= hg * (1 - 1e-9) else 1)" \
   "$(h2 "$work/kalman.yaml")" "$(h2 "$work/dint.yaml")" "$(gam "$work/kalman.yaml")" "$(gam "$work/dint.yaml")" \
   || say "Kalman H2 $(h2 "$work/kalman.yaml") vs Hinf $(h2 "$work/dint.yaml"); gamma $(gam "$work/kalman.yaml") vs $(gam "$work/dint.yaml")"
+
+dintf=$plants/double-integrator-filtered.yaml
+run 0 solve_dintf solve "$dintf" -o "$work/dintf.yaml"
+grep -q "^  estimate: filtered$" "$work/dintf.yaml" || say "gains file does not say estimate: filtered"
+grep -q "^  D_F:$" "$work/dintf.yaml" || say "gains file has no filter.D_F"
+grep -q "^  M:$" "$work/dintf.yaml" || say "gains file has no filter.M"
+grep -q "filtered estimate" "$work/solve_dintf.out" || say "solve does not say it gives the filtered estimate"
+python3 -c "import sys; f, p = map(float, sys.argv[1:]); sys.exit(0 if f < p else 1)" \
+  "$(gam "$work/dintf.yaml")" "$(gam "$work/dint.yaml")" \
+  || say "filtered gamma $(gam "$work/dintf.yaml") not below the predictor's $(gam "$work/dint.yaml")"
+run 0 verify_dintf verify "$dintf" "$work/dintf.yaml"
+grep -q "L - L M C, L M, G to" "$work/verify_dintf.out" || say "verify does not check the filtered realisation"
+python3 - "$work/dintf.yaml" "$work/tamperedf.yaml" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+i = text.index("  D_F:\n")
+j = text.index("[", i) + 1
+k = min(text.index(",", j), text.index("]", j))
+open(sys.argv[2], "w").write(text[:j] + repr(float(text[j:k]) + 1e-3) + text[k:])
+PY
+run 1 verify_tamperedf verify "$dintf" "$work/tamperedf.yaml"
+grep -q "NOT A - K C, K, L - L M C, L M, G" "$work/verify_tamperedf.out" || say "verify does not name the broken filtered realisation"
+mkdir "$work/c3"
+run 2 codegen_dintf codegen "$work/dintf.yaml" --out "$work/c3" --prefix dintf
+grep -q "filter.estimate: filtered" "$work/codegen_dintf.err" || say "codegen does not name filter.estimate"
+run 0 kalman_dintf kalman "$dintf" -o "$work/kalmanf.yaml"
+grep -q "method: .\?Kalman filter, estimate x_hat(k|k)" "$work/kalmanf.yaml" || say "kalman does not give the Kalman filter"
+run 0 verify_kalmanf verify "$dintf" "$work/kalmanf.yaml"
+run 0 compare_dintf compare "$dintf" "$work/dintf.yaml"
 
 tint=$plants/triple-integrator-known-input.yaml
 run 0 solve_tint solve "$tint" -o "$work/tint.yaml"

@@ -90,6 +90,8 @@ double replay_error(const Csv& csv, const fs::path& gains_file, const std::strin
   const YAML::Node g = YAML::LoadFile(gains_file.string());
   const Eigen::MatrixXd A_F = yaml_matrix(g["filter"]["A_F"]), B_F = yaml_matrix(g["filter"]["B_F"]),
                         C_F = yaml_matrix(g["filter"]["C_F"]);
+  // a filtered estimate's feedthrough (docs/maths.md (140)): z_F(k) = C_F x_F(k) + D_F y(k)
+  const Eigen::MatrixXd D_F = g["filter"]["D_F"] ? yaml_matrix(g["filter"]["D_F"]) : Eigen::MatrixXd::Zero(6, 3);
   Eigen::VectorXd z0(6);
   z0 << 630, 520, 1000, 0, 0, 0;  // initial estimate of docs/maths.md §9.8 (the scenarios' default)
   Eigen::VectorXd x = C_F.jacobiSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(z0);  // C_F⁺ z0
@@ -98,9 +100,9 @@ double replay_error(const Csv& csv, const fs::path& gains_file, const std::strin
   EXPECT_GE(c0, 0);
   double worst = 0;
   for (const auto& row : csv.rows) {
-    const Eigen::VectorXd z = C_F * x;
-    for (int i = 0; i < 6; ++i) worst = std::max(worst, std::fabs(z(i) - row[c0 + i]));
     const Eigen::Vector3d y(row[my], row[my + 1], row[my + 2]);
+    const Eigen::VectorXd z = C_F * x + D_F * y;
+    for (int i = 0; i < 6; ++i) worst = std::max(worst, std::fabs(z(i) - row[c0 + i]));
     x = A_F * x + B_F * y;
   }
   return worst;

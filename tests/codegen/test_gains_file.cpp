@@ -113,7 +113,8 @@ TEST(GainsFile, FilterKeys) {
   EXPECT_HAS(error_for("format: hinf-gains/1\n"), "missing key 'filter'");
   EXPECT_HAS(error_for(replace(kGood, "  C_F: [[1.0, -1.0]]\n", "")), "missing key 'filter.C_F'");
   EXPECT_HAS(error_for(replace(kGood, "  C_F:", "  D_F: [[1]]\n  C_F:")),
-             "unknown key 'filter.D_F'");
+             "filter.D_F: only a filtered estimate (filter.estimate: filtered) has D_F");
+  EXPECT_HAS(error_for(replace(kGood, "  C_F:", "  D_G: [[1]]\n  C_F:")), "unknown key 'filter.D_G'");
   EXPECT_HAS(error_for(replace(kGood, "  C_F: [[1.0, -1.0]]", "  C_F: {diag: [1, 1]}")),
              "filter.C_F: expected a matrix");
 }

@@ -55,21 +55,43 @@ void read_header(const YamlMap& top, GainsFile& g) {
   if (top.has("gamma_squared")) top.positive("gamma_squared");
 }
 
-// filter: {form, A_F: n×n, B_F: n×m, C_F: l×n, K: n×m, G_F: n×r} (docs/maths.md (5)-(6),
-// (121)), nested rows only; K only (and then required) in observer form.
+// An observer-form filter's gains: K (n×m, required), and for the filtered estimate
+// (docs/maths.md §18.6) M (n×m) and the feedthrough D_F (l×m), both required.
+void read_observer_gains(const YamlMap& filter, GainsFile& g) {
+  filter.required("K", "an observer-form filter carries its gain K (A_F = A - K C, B_F = K)");
+  g.K = filter.matrix("K", MatrixForms::RowsOnly);
+  if (g.K.rows() != g.B_F.rows() || g.K.cols() != g.B_F.cols())
+    filter.fail("K", "expected " + dims(g.B_F) + " (the shape of filter.B_F), got " + dims(g.K));
+  if (!g.filtered) return;
+  filter.required("M", "a filtered estimate carries its gain M (x_hat(k|k) = x_hat + M (y - C x_hat))");
+  filter.required("D_F", "a filtered estimate carries its feedthrough D_F (z_F = C_F x_F + D_F y)");
+  g.M = filter.matrix("M", MatrixForms::RowsOnly);
+  g.D_F = filter.matrix("D_F", MatrixForms::RowsOnly);
+  if (g.M.rows() != g.B_F.rows() || g.M.cols() != g.B_F.cols())
+    filter.fail("M", "expected " + dims(g.B_F) + " (the shape of filter.B_F), got " + dims(g.M));
+  if (g.D_F.rows() != g.C_F.rows() || g.D_F.cols() != g.B_F.cols())
+    filter.fail("D_F", "expected " + std::to_string(g.C_F.rows()) + "x" + std::to_string(g.B_F.cols()) +
+                           " (l x m: rows of filter.C_F, columns of filter.B_F), got " + dims(g.D_F));
+}
+
+// filter: {form, estimate, A_F: n×n, B_F: n×m, C_F: l×n, D_F: l×m, K: n×m, M: n×m, G_F: n×r}
+// (docs/maths.md (5)-(6), (121), (140)), nested rows only; K only (and then required) in
+// observer form, M and D_F only (and then required) for its filtered estimate.
 void read_filter(const YamlMap& top, GainsFile& g) {
   top.required("filter", "expected 'filter: {A_F: ..., B_F: ..., C_F: ...}'");
-  const YamlMap filter = top.map("filter", {"form", "A_F", "B_F", "C_F", "K", "G_F"});
+  const YamlMap filter = top.map("filter", {"form", "estimate", "A_F", "B_F", "C_F", "D_F", "K", "M", "G_F"});
   g.observer_form = filter.choice("form", {"augmented", "observer"}, "augmented") == "observer";
+  g.filtered = filter.choice("estimate", {"predicted", "filtered"}, "predicted") == "filtered";
+  if (g.filtered && !g.observer_form)
+    filter.fail("estimate", "only an observer-form filter (filter.form: observer) has a filtered estimate");
+  for (const char* key : {"M", "D_F"})
+    if (!g.filtered && filter.has(key))
+      filter.fail(key, "only a filtered estimate (filter.estimate: filtered) has " + std::string(key));
   g.A_F = filter.matrix("A_F", MatrixForms::RowsOnly);
   g.B_F = filter.matrix("B_F", MatrixForms::RowsOnly);
   g.C_F = filter.matrix("C_F", MatrixForms::RowsOnly);
-  if (g.observer_form) {
-    filter.required("K", "an observer-form filter carries its gain K (A_F = A - K C, B_F = K)");
-    g.K = filter.matrix("K", MatrixForms::RowsOnly);
-  } else if (filter.has("K")) {
+  if (!g.observer_form && filter.has("K"))
     filter.fail("K", "only an observer-form filter (filter.form: observer) has a gain K");
-  }
   g.G_F = filter.has("G_F") ? filter.matrix("G_F", MatrixForms::RowsOnly) : Eigen::MatrixXd::Zero(g.A_F.rows(), 0);
   const std::string n = std::to_string(g.A_F.rows());
   if (g.A_F.cols() != g.A_F.rows())
@@ -80,8 +102,7 @@ void read_filter(const YamlMap& top, GainsFile& g) {
   if (g.C_F.cols() != g.A_F.rows())
     filter.fail("C_F", "expected " + n + " columns (l x n, n = " + n +
                            " from filter.A_F), got " + dims(g.C_F));
-  if (g.observer_form && (g.K.rows() != g.B_F.rows() || g.K.cols() != g.B_F.cols()))
-    filter.fail("K", "expected " + dims(g.B_F) + " (the shape of filter.B_F), got " + dims(g.K));
+  if (g.observer_form) read_observer_gains(filter, g);
   if (filter.has("G_F") && g.G_F.rows() != g.A_F.rows())
     filter.fail("G_F", "expected " + n + " rows (n x r, n = " + n + " from filter.A_F), got " + dims(g.G_F));
 }

@@ -108,7 +108,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
       config.settings = read_solver_section(reader, solver);
       located(reader, root, solver_key, [&] { config.settings.validate(); });
     }
-    if (const YAML::Node filter = root["filter"]) config.settings.form = read_filter_section(reader, filter);
+    if (const YAML::Node filter = root["filter"]) read_filter_section(reader, filter, config.settings);
     if (const YAML::Node kalman = root["kalman"]) {  // the Kalman predictor's covariances (docs/maths.md §20)
       const YamlMap k = reader.map(kalman, "kalman", {"Q", "R"});
       if (k.has("Q")) config.kalman_noise.Q = k.matrix("Q");

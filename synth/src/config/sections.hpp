@@ -42,7 +42,8 @@ HillPlantSpec read_hill_section(const YamlReader& reader, const YAML::Node& hill
 // `solver:`; one key per field of Settings; ranges are checked by Settings::validate.
 Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver);
 
-// `filter:` {form: auto | augmented | observer} (docs/maths.md §18.4).
-FormChoice read_filter_section(const YamlReader& reader, const YAML::Node& filter);
+// `filter:` {form: auto | augmented | observer (docs/maths.md §18.4), estimate: predicted |
+// filtered (§18.6)} into settings.form, settings.estimate.
+void read_filter_section(const YamlReader& reader, const YAML::Node& filter, Settings& settings);
 
 }  // namespace hinf::synth

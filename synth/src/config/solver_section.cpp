@@ -30,10 +30,15 @@ Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver)
   return s;
 }
 
-FormChoice read_filter_section(const YamlReader& reader, const YAML::Node& filter) {
-  const YamlMap f = reader.map(filter, "filter", {"form"});
+void read_filter_section(const YamlReader& reader, const YAML::Node& filter, Settings& settings) {
+  const YamlMap f = reader.map(filter, "filter", {"form", "estimate"});
   const std::string form = f.choice("form", {"auto", "augmented", "observer"}, "auto");
-  return form == "observer" ? FormChoice::Observer : form == "augmented" ? FormChoice::Augmented : FormChoice::Auto;
+  settings.form = form == "observer" ? FormChoice::Observer : form == "augmented" ? FormChoice::Augmented : FormChoice::Auto;
+  const bool filtered = f.choice("estimate", {"predicted", "filtered"}, "predicted") == "filtered";
+  settings.estimate = filtered ? Estimate::Filtered : Estimate::Predicted;
+  if (filtered && settings.form == FormChoice::Augmented)
+    f.fail("estimate", "'filtered' is the observer form's a-posteriori estimate (docs/maths.md §18.6); "
+                       "Theorem 1's augmented filter (filter.form: augmented) has none: use filter.form: observer or auto");
 }
 
 }  // namespace hinf::synth

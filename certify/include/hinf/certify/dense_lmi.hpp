@@ -20,6 +20,7 @@ Eigen::MatrixXd theorem1_matrix(const hinf::Plant& plant, const Theorem1Point& x
 // The observer-form LMI (124) of docs/maths.md at a point (blocks n, n, p, q, l[, j]).
 struct ObserverPoint {
   Eigen::MatrixXd P, Y;    // Y = P K
+  Eigen::MatrixXd N;       // N = L M, l×m, filtered variant only (docs/maths.md (142)); empty: predictor
   Eigen::VectorXd lambda;  // one multiplier per block of F; empty without uncertainty
   double g = 0;            // γ²
 };

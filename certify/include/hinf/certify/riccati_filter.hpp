@@ -23,6 +23,12 @@
 // Central filter (predictor form): P̃ = (P⁻¹ − γ⁻² LᵀL)⁻¹ = P + P Lᵀ(γ²I − L P Lᵀ)⁻¹ L P,
 //   K = A P̃ Cᵀ (R + C P̃ Cᵀ)⁻¹,  A_F = A − K C,  B_F = K,  C_F = L.
 // As γ → ∞ this is the Kalman one-step predictor with Q = B Bᵀ, R = D Dᵀ.
+//
+// A posteriori (estimate of z(k) from y(0..k), docs/maths.md §18.6): the same DARE (i), and
+//   (ii') P⁻¹ + Cᵀ R⁻¹ C − γ⁻² LᵀL > 0, i.e. γ² I − L P_f Lᵀ > 0, P_f = P − P Cᵀ (R + C P Cᵀ)⁻¹ C P
+// (the inertia of R_e = R_γ + H P Hᵀ equals that of R_γ when y(k) is processed before the
+// fictitious observation L x(k)). Central filter: x̂(k|k) = x̂ + M (y − C x̂),
+// M = P Cᵀ (R + C P Cᵀ)⁻¹, x̂(k+1) = A x̂(k|k): K = A M, C_F = L − L M C, D_F = L M (143).
 // The optimum over causal predictors equals the optimum of Theorem 1 at H = E = 0
 // (both are a priori problems over full-order filters; see the report).
 #pragma once
@@ -40,14 +46,16 @@ struct HinfPredictorLevel {
   Eigen::MatrixXd P;                    // stabilising DARE solution (if found)
   Filter filter;                        // central filter (if feasible)
   double closed_loop_spectral_radius = 0;  // ρ(A (I + P G)⁻¹)
-  double min_eig_gamma2_minus_LPL = 0;     // λ_min(γ² I − L P Lᵀ) (+∞ for γ = ∞)
+  double min_eig_gamma2_minus_LPL = 0;     // λ_min(γ² I − L P Lᵀ), or of γ² I − L P_f Lᵀ (filtered); +∞ for γ = ∞
   double riccati_residual = 0;             // ‖DARE residual‖_F / max(1, ‖P‖_F)
 };
 
 // Riccati test at a given level (gamma = std::numeric_limits<double>::infinity() gives
 // the Kalman predictor). Throws Error(InvalidInput) for bad dimensions, R not positive
 // definite or gamma ≤ 0. The filter is returned in observer form (form, K, G_F set).
-HinfPredictorLevel hinf_predictor_at_level(const Plant& nominal, double gamma);
+// estimate Filtered: the a posteriori conditions and central filter (ii') above.
+HinfPredictorLevel hinf_predictor_at_level(const Plant& nominal, double gamma,
+                                           Estimate estimate = Estimate::Predicted);
 
 struct HinfPredictorOptimum {
   double gamma = 0;             // smallest level found feasible (upper end of the bracket)
@@ -59,9 +67,11 @@ struct HinfPredictorOptimum {
 };
 
 // Bisection (geometric) on γ between σ_max(L B) (a lower bound: e(k) contains L B w(k−1),
-// which y(0..k−1) does not see) and the H∞ norm of the Kalman predictor's error system,
-// until gamma ≤ (1 + rel_tol) · gamma_infeasible.
-HinfPredictorOptimum optimal_hinf_predictor(const Plant& nominal, double rel_tol = 1e-9);
-double optimal_hinf_predictor_gamma(const Plant& nominal, double rel_tol = 1e-9);
+// which y(0..k−1) does not see; 0 for the filtered estimate) and the H∞ norm of the Kalman
+// predictor's (filter's) error system, until gamma ≤ (1 + rel_tol) · gamma_infeasible.
+HinfPredictorOptimum optimal_hinf_predictor(const Plant& nominal, double rel_tol = 1e-9,
+                                            Estimate estimate = Estimate::Predicted);
+double optimal_hinf_predictor_gamma(const Plant& nominal, double rel_tol = 1e-9,
+                                    Estimate estimate = Estimate::Predicted);
 
 }  // namespace hinf::certify

@@ -11,6 +11,8 @@
 // is, after Schur complements on the −I and −P blocks and the congruence
 // diag(I, I, I/γ, I/√λ), the discrete bounded-real inequality for
 //     G_λ(z) = [C̄; √λ Ē] (zI − Ā)⁻¹ [B̄/γ, H̄/√λ],
+// (plus the feedthrough [D̄/γ, 0; 0, 0] when the error system has one, the filtered observer's
+// (141), whose output row then enters the LMI as in (142))
 // so (strict bounded-real lemma) it is feasible in P for this λ iff Ā is Schur stable
 // and ‖G_λ‖∞ < 1. G_λ = D G₁ D⁻¹ with D = diag(I, √λ I) on the uncertainty channel,
 // so log σ_max(G_λ(e^{jθ})) is convex in log λ for every θ (Sezginer & Overton 1990)

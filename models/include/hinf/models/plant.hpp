@@ -48,12 +48,22 @@ struct Plant {
 //              plant must be robustly Schur stable (Theorem 1, §3);
 //   Observer   A_F = A − K C, B_F = K, C_F = L, G_F = G: the estimate x̂ of x itself, whose
 //              error e = x − x̂ obeys (122) and needs (A, C) detectable only.
+// An observer-form filter estimates z(k) from y(0..k−1) (the predictor) or, in its filtered
+// variant (docs/maths.md §18.6), from y(0..k): ẑ(k|k) = L x̂(k|k), x̂(k|k) = x̂ + M(y − C x̂),
+// so C_F = L − L M C and the output has the feedthrough D_F = L M.
 enum class FilterForm { Augmented, Observer };
 
 inline const char* to_string(FilterForm f) { return f == FilterForm::Observer ? "observer" : "augmented"; }
 
-// The fixed-gain full-order filter of docs/maths.md (5)–(6), with the known input (121):
-//   x_F(k+1) = A_F x_F(k) + B_F y(k) + G_F u(k),  z_F(k) = C_F x_F(k).
+// Which estimate of z(k) an observer-form filter gives: from y(0..k−1) (the one-step
+// predictor, (122)) or from y(0..k) (the filtered variant, docs/maths.md §18.6).
+enum class Estimate { Predicted, Filtered };
+
+inline const char* to_string(Estimate e) { return e == Estimate::Filtered ? "filtered" : "predicted"; }
+
+// The fixed-gain full-order filter of docs/maths.md (5)–(6), with the known input (121) and,
+// for the filtered observer (140), the feedthrough D_F:
+//   x_F(k+1) = A_F x_F(k) + B_F y(k) + G_F u(k),  z_F(k) = C_F x_F(k) + D_F y(k).
 struct Filter {
   Filter() = default;
   // An augmented-form filter without a known input.
@@ -66,6 +76,12 @@ struct Filter {
   FilterForm form = FilterForm::Augmented;
   Eigen::MatrixXd K;    // n×m observer gain (observer form only; equals B_F)
   Eigen::MatrixXd G_F;  // n×r known-input matrix (empty or n×0 without a known input)
+  // Filtered observer only (docs/maths.md (140)); both empty for a predictor:
+  Eigen::MatrixXd M;    // n×m: x̂(k|k) = x̂(k) + M (y(k) − C x̂(k))
+  Eigen::MatrixXd D_F;  // l×m feedthrough, equals L M
+
+  // The filtered variant of the observer form: z_F(k) uses y(k).
+  bool filtered() const { return M.size() > 0; }
 };
 
 }  // namespace hinf

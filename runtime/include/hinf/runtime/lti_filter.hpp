@@ -1,10 +1,11 @@
 // The synthesised robust H-infinity filter as a discrete LTI system, docs/maths.md (5)–(6):
 //
-//     z_F(k)   = C_F x_F(k)
+//     z_F(k)   = C_F x_F(k)             [+ D_F y(k) for a filtered estimate, (140)]
 //     x_F(k+1) = A_F x_F(k) + B_F y(k)  [+ G_F u(k) with a known input, (121)]
 //
-// z_F(k) depends on y(0..k-1) only: the filter is a one-step predictor. step(y(k))
-// returns z_F(k) and then advances the state, in that order.
+// Without D_F, z_F(k) depends on y(0..k-1) only: the filter is a one-step predictor; with
+// D_F (the filtered observer of docs/maths.md §18.6, LtiFilter only) it also uses y(k).
+// step(y(k)) returns z_F(k) and then advances the state, in that order.
 //
 // Two variants with the same semantics:
 //   LtiFilter                    dimensions known at run time (e.g. from a gains file);
@@ -157,12 +158,25 @@ class LtiFilter {
   // With a known input u (docs/maths.md (121)): x_F(k+1) = A_F x_F(k) + B_F y(k) + G_F u(k);
   // G_F is n x r (r = 0: none). Then step(y, u) must be used.
   LtiFilter(const Eigen::Ref<const Matrix>& A_F, const Eigen::Ref<const Matrix>& B_F,
-            const Eigen::Ref<const Matrix>& C_F, const Eigen::Ref<const Matrix>& G_F) {
+            const Eigen::Ref<const Matrix>& C_F, const Eigen::Ref<const Matrix>& G_F)
+      : LtiFilter(A_F, B_F, C_F, G_F, Matrix(0, 0)) {}
+
+  // With the feedthrough of a filtered estimate (docs/maths.md (140)): z_F(k) = C_F x_F(k) +
+  // D_F y(k); D_F is l x m, or 0 x 0 for none. G_F as above (n x 0: no known input).
+  LtiFilter(const Eigen::Ref<const Matrix>& A_F, const Eigen::Ref<const Matrix>& B_F,
+            const Eigen::Ref<const Matrix>& C_F, const Eigen::Ref<const Matrix>& G_F,
+            const Eigen::Ref<const Matrix>& D_F) {
     LtiGainsValidation v = validate_lti_gains(A_F, B_F, C_F);
     if (!v.ok()) throw std::invalid_argument("hinf::runtime::LtiFilter: " + v.message);
     if (G_F.rows() != A_F.rows() || !G_F.allFinite())
       throw std::invalid_argument("hinf::runtime::LtiFilter: G_F must be n x r with finite entries, n = " +
                                   std::to_string(A_F.rows()) + "; got " + detail::dims(G_F));
+    if (D_F.size() > 0 && (D_F.rows() != C_F.rows() || D_F.cols() != B_F.cols() || !D_F.allFinite()))
+      throw std::invalid_argument("hinf::runtime::LtiFilter: D_F must be l x m with finite entries, l = " +
+                                  std::to_string(C_F.rows()) + ", m = " + std::to_string(B_F.cols()) + "; got " +
+                                  detail::dims(D_F));
+    D_F_ = D_F.size() > 0 ? Matrix(D_F) : Matrix::Zero(C_F.rows(), B_F.cols());
+    feedthrough_ = D_F.size() > 0;
     spectral_radius_ = v.spectral_radius;
     A_F_ = A_F;
     B_F_ = B_F;
@@ -196,7 +210,7 @@ class LtiFilter {
     x_F_ = x_F;
   }
 
-  // One step of docs/maths.md (5)–(6): returns z_F(k) = C_F x_F(k), then
+  // One step of docs/maths.md (5)–(6): returns z_F(k) = C_F x_F(k) (+ D_F y(k)), then
   // x_F(k+1) = A_F x_F(k) + B_F y(k).
   // The returned reference stays valid until the next call. No heap allocation.
   // Throws std::invalid_argument only if y has the wrong size, or the filter has a known
@@ -216,7 +230,8 @@ class LtiFilter {
     return z;
   }
 
-  // Current estimate z_F(k) = C_F x_F(k) without advancing (for the state after the last step).
+  // Current estimate z_F(k) = C_F x_F(k) without advancing (for the state after the last step;
+  // for a filtered estimate this is its part without y(k), D_F y(k) is not added).
   const Vector& output() {
     z_F_.noalias() = C_F_ * x_F_;
     return z_F_;
@@ -227,14 +242,16 @@ class LtiFilter {
   const Matrix& B_F() const { return B_F_; }
   const Matrix& C_F() const { return C_F_; }
   const Matrix& G_F() const { return G_F_; }
+  const Matrix& D_F() const { return D_F_; }  // l x m, zero without a feedthrough
   const Matrix& C_F_pinv() const { return C_F_pinv_; }
   double spectral_radius() const { return spectral_radius_; }  // of A_F, from construction
 
  private:
-  // z_F(k) = C_F x_F(k), then x_F(k+1) = A_F x_F(k) + B_F y(k).
+  // z_F(k) = C_F x_F(k) (+ D_F y(k)), then x_F(k+1) = A_F x_F(k) + B_F y(k).
   const Vector& advance(const Eigen::Ref<const Vector>& y) {
     check_size("y", y.size(), m());
     z_F_.noalias() = C_F_ * x_F_;
+    if (feedthrough_) z_F_.noalias() += D_F_ * y;
     x_next_.noalias() = A_F_ * x_F_;
     x_next_.noalias() += B_F_ * y;
     x_F_.swap(x_next_);
@@ -247,13 +264,15 @@ class LtiFilter {
                                   std::to_string(got) + ", expected " + std::to_string(want));
   }
 
-  Matrix A_F_, B_F_, C_F_, G_F_, C_F_pinv_;
+  Matrix A_F_, B_F_, C_F_, G_F_, D_F_, C_F_pinv_;
   Vector x_F_, x_next_, z_F_;
+  bool feedthrough_ = false;
   double spectral_radius_ = 0.0;
 };
 
 // ---------------------------------------------------------------------------------------
 // Fixed-size filter: NX = filter order n, NY = measurement size m, NZ = output size l.
+// The predictor (5)–(6) only: no known input, no feedthrough (use LtiFilter for those).
 template <int NX, int NY, int NZ, class Scalar = double>
 class FixedLtiFilter {
   static_assert(NX > 0 && NY > 0 && NZ > 0, "FixedLtiFilter: dimensions must be positive");

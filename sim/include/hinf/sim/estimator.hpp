@@ -53,9 +53,14 @@ class Estimator {
   FilterHealth health_;
 };
 
-// The filter docs/maths.md (5)–(6) with x_F(0) = C_F⁺ z0, (8) (L = I).
-std::unique_ptr<Estimator> make_lti_estimator(const Matrix& A_F, const Matrix& B_F, const Matrix& C_F,
-                                              const Vector6& z0);
+// A fixed-gain filter's realisation (docs/maths.md (5)–(6)).
+struct LtiGains {
+  Matrix A_F, B_F, C_F;
+  Matrix D_F;  // l×m feedthrough of a filtered estimate (docs/maths.md (140)); empty: none
+};
+
+// The filter docs/maths.md (5)–(6) (with D_F: (140)) with x_F(0) = C_F⁺ z0, (8) (L = I).
+std::unique_ptr<Estimator> make_lti_estimator(const LtiGains& gains, const Vector6& z0);
 
 // EKF on the Hill/CW model (nominal ω₀, exact zero-order-hold discretisation) with the
 // Cartesian position measurement:

@@ -15,10 +15,6 @@
 namespace hinf::sim {
 
 // Gains of an LTI filter (docs/maths.md (5)–(6)), obtained once before the runs (gains_source.hpp).
-struct LtiGains {
-  Matrix A_F, B_F, C_F;
-};
-
 // Everything the runs share, prepared once.
 struct RunSetup {
   Scenario scenario;

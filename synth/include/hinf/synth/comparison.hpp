@@ -20,7 +20,8 @@ struct FilterFigures {
 struct Comparison {
   std::vector<double> theta;  // rad/sample
   FilterFigures filter;       // the given filter
-  FilterFigures kalman;       // the Kalman one-step predictor (kalman_predictor)
+  FilterFigures kalman;       // the Kalman one-step predictor, or the Kalman filter x̂(k|k) beside a
+                              // filtered estimate (kalman_predictor, docs/maths.md (143))
 };
 
 // `points` log-spaced frequencies (≥ 2) with both filters' peak frequencies added.

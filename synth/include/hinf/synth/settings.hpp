@@ -1,8 +1,10 @@
 // Synthesis settings: a flat struct, one documented default per field, one validate().
 // Every field is set by the config's `solver:` section under its own name, but for `form`
-// (the config's `filter.form`).
+// and `estimate` (the config's `filter.form`, `filter.estimate`).
 #pragma once
 #include <string>
+
+#include "hinf/models/plant.hpp"
 
 namespace hinf::synth {
 
@@ -13,6 +15,9 @@ enum class FormChoice { Auto, Augmented, Observer };
 struct Settings {
   // The filter's formulation (config `filter.form: auto | augmented | observer`).
   FormChoice form = FormChoice::Auto;
+  // The estimate an observer-form filter gives (config `filter.estimate: predicted | filtered`):
+  // of z(k) from y(0..k−1), or from y(0..k) (docs/maths.md §18.6; observer form only).
+  hinf::Estimate estimate = hinf::Estimate::Predicted;
   // Strictness margin of the LMI, relative to the equilibrated problem: the solver
   // enforces −M(x) ⪰ lmi_margin·I (docs/maths.md (26), [D2], [D3]). Refused below 1e-14
   // (solver tolerance).

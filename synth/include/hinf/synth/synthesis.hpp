@@ -85,7 +85,7 @@ struct SynthesisResult {
 
 // What γ bounds for a filter of this form on a plant with or without uncertainty: which
 // signal, from which inputs, for which uncertainty (docs/maths.md (13), (123)).
-std::string bound_statement(FilterForm form, bool uncertain);
+std::string bound_statement(FilterForm form, bool uncertain, Estimate estimate = Estimate::Predicted);
 
 // The SDP `synthesize` would solve, known before it runs (for -v and the memory guard):
 // its form, the LMI's order N and variables, and the solver's memory model's estimate.

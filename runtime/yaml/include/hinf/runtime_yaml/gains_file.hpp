@@ -13,6 +13,9 @@ struct GainsFile {
   bool observer_form = false;         // filter.form: observer (absent or augmented: false)
   Eigen::MatrixXd K;                  // filter.K, n×m (observer form only)
   Eigen::MatrixXd G_F;                // filter.G_F, n×r known input (n×0 if absent)
+  bool filtered = false;              // filter.estimate: filtered (observer form, docs/maths.md §18.6)
+  Eigen::MatrixXd M;                  // filter.M, n×m: x̂(k|k) = x̂ + M (y − C x̂) (filtered only)
+  Eigen::MatrixXd D_F;                // filter.D_F, l×m: z_F = C_F x_F + D_F y (filtered only; else empty)
   std::optional<double> gamma;        // certified bound, if the file has one
   std::optional<double> sample_time;  // s, the period the filter must be called at, if stated
   std::string config_sha256;          // empty if absent
