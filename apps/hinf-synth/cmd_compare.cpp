@@ -23,17 +23,21 @@ std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
   return os.str();
 }
 
-std::string plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz) {
+// The Kalman filter set beside the given one: the predictor, or x̂(k|k) beside a filtered estimate.
+const char* kalman_name(bool filtered) { return filtered ? "Kalman filter x_hat(k|k)" : "Kalman predictor"; }
+
+std::string plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz,
+                        bool filtered) {
   std::ostringstream gp;
   const std::string x = hz ? "2" : "1";
   gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
      << "set grid\nset key top left\nset logscale xy\nset datafile separator ','\n"
      << "set xlabel " << (hz ? "'frequency (Hz)'" : "'frequency (rad/sample)'") << "\n"
      << "set ylabel 'largest singular value of the error system'\n"
-     << "set title 'estimation error gain: the filter beside the Kalman predictor' noenhanced\n"
+     << "set title 'estimation error gain: the filter beside the " << kalman_name(filtered) << "' noenhanced\n"
      << "plot " << gnuplot_quoted(data) << " every ::1 using " << x << ":3 with lines lw 2 lc rgb '#d62728' title "
      << gnuplot_quoted(gains) << " noenhanced, " << gnuplot_quoted(data) << " every ::1 using " << x
-     << ":4 with lines lw 2 lc rgb '#1f77b4' title 'Kalman predictor'\nset output\n";
+     << ":4 with lines lw 2 lc rgb '#1f77b4' title '" << kalman_name(filtered) << "' noenhanced\nset output\n";
   return gp.str();
 }
 
@@ -46,8 +50,9 @@ void print_row(const std::string& name, const synth::FilterFigures& f) {
 
 void add_compare(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand(
-      "compare", "a filter beside the Kalman predictor of the same plant: worst-case gain, robust bound, RMS error "
-                 "under white noise, and sigma(omega) of both error systems (CSV, PNG)");
+      "compare", "a filter beside the Kalman predictor of the same plant (the Kalman filter x_hat(k|k) beside a filtered "
+                 "estimate): worst-case gain, robust bound, RMS error under white noise, and sigma(omega) of both error "
+                 "systems (CSV, PNG)");
   const auto args = add_config_gains_args(*cmd, "gains YAML of the filter to compare");
   auto csv = std::make_shared<std::string>();
   auto plot = std::make_shared<std::string>();
@@ -64,13 +69,14 @@ void add_compare(CLI::App& app, Action& action) {
       const std::optional<double> T = in.config.sample_time();
       std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
       print_row(args->gains, c.filter);
-      print_row("Kalman predictor", c.kalman);
+      print_row(kalman_name(in.filter.filtered()), c.kalman);
       const std::string data = sigma_csv(c, T);
       if (!csv->empty()) write_file_atomic(*csv, data, {args->config, args->gains});
       if (!plot->empty())
         write_png_by_gnuplot(
             *plot, data,
-            [&](const std::string& d, const std::string& png) { return plot_script(d, png, args->gains, T.has_value()); },
+            [&](const std::string& d, const std::string& png) { return plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
+            },
             {args->config, args->gains});
       return 0;
     };

@@ -12,6 +12,7 @@
 #include "hinf/models/discretise.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "hinf/synth/validate_plant.hpp"
+#include "pipeline.hpp"
 
 namespace hinf::synth {
 namespace {
@@ -73,8 +74,9 @@ SynthesisResult kalman_predictor(const Plant& plant, const Settings& settings, c
   if (plant.uncertain()) claim = std::max(claim, robust_bound(plant, r.filter, settings) * (1 + kClaimMargin));
   r.certificate = certify_filter(plant, r.filter, claim, settings);
   if (!r.certificate.passed)
-    throw Error(ErrorCode::NumericalFailure,
-                "the Kalman predictor's certificate failed at gamma = " + significant_text(claim, 10) + "; no gains written");
+    throw Error(ErrorCode::NumericalFailure, std::string(filtered ? "the Kalman filter's" : "the Kalman predictor's") +
+                                                 " certificate failed at gamma = " + significant_text(claim, 10) + ":" +
+                                                 failed_checks(r.certificate, claim) + " no gains written");
   r.gamma = claim;
   r.gamma_squared = claim * claim;
   r.bound = bound_statement(FilterForm::Observer, plant.uncertain(), settings.estimate);

@@ -168,7 +168,7 @@ Filter recover_filter(const certify::Theorem1Point& pt) {
 AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   const int n = P.n(), p = P.p(), q = P.q(), l = P.l();
   const bool unc = P.uncertain();
-  const StateSpace es = certify::error_system(P, F);  // Ā, B̄, C̄: docs/maths.md (9)–(11), or (122)–(123)
+  const StateSpace es = certify::error_system(P, F);  // Ā, B̄, C̄, D̄: docs/maths.md (9)–(11), (122)–(123), (141)
   const int n2 = static_cast<int>(es.A.rows());        // 2n, or n for an observer-form filter
   const MatrixXd& A0 = es.A;
   const MatrixXd& Bb = es.B;
@@ -187,6 +187,7 @@ AnalysisLmi build_analysis_lmi(const Plant& P, const Filter& F) {
   M.add_term(0, 2, A.P, I2, Bb);
   M.add_term(1, 1, A.P, -I2, I2);
   M.add_constant(1, 3, Cb.transpose());
+  if (!es.D.isZero(0.0)) M.add_constant(2, 3, es.D.transpose());  // the filtered estimate's feedthrough (141)
   M.add_scalar_term(2, 2, A.g, -MatrixXd::Identity(p + q, p + q));
   M.add_constant(3, 3, -MatrixXd::Identity(l, l));
   if (unc) {

@@ -76,12 +76,12 @@ Plant triple_integrator_with_input() {
   return P;
 }
 
-Plant uncontrolled_hill_nominal() {
+Plant uncontrolled_hill(double delta_bar) {
   hinf::synth::HillPlantSpec s;
   s.orbital_rate = 7.2722e-5;
   s.chaser_mass = 1000;
   s.sample_time = 0.1;
-  s.delta_bar = 0;
+  s.delta_bar = delta_bar;
   VectorXd b(6);
   b << 0.05, 0.05, 0.05, 0.001, 0.001, 0.001;
   s.B = b.asDiagonal();
@@ -177,7 +177,7 @@ TEST(FilteredEstimate, ScalarPlantsMatchADenseScanByLmiAndRiccati) {
 TEST(FilteredEstimate, IntegratorsAndTheUncontrolledHillPlantMatchRiccati) {
   expect_filtered_lmi_equals_riccati(double_integrator(), "double integrator");
   expect_filtered_lmi_equals_riccati(triple_integrator_with_input(), "triple integrator with a known input");
-  expect_filtered_lmi_equals_riccati(uncontrolled_hill_nominal(), "uncontrolled Hill plant");
+  expect_filtered_lmi_equals_riccati(uncontrolled_hill(0), "uncontrolled Hill plant");
   expect_central_filter_achieves_its_level(double_integrator(), 2.0);
 }
 
@@ -263,6 +263,24 @@ TEST(FilteredEstimate, KalmanFilterBesideTheHinfFilteredEstimate) {
   EXPECT_LE(kf.certificate.h2_norm_nominal, kp.certificate.h2_norm_nominal);
   EXPECT_LE(kf.certificate.h2_norm_nominal, hf.certificate.h2_norm_nominal * (1 + 1e-9));
   EXPECT_GE(kf.gamma, hf.gamma * (1 - 1e-9));
+}
+
+// With uncertainty (on the error dynamics, (141) with A + H F E − K C): the robust bound by the
+// analysis LMI (50) solved by the barrier method equals check 4's bounded-real search, both
+// with the feedthrough −L M D v; the Kalman filter x̂(k|k) of the uncertain plant is certified at it.
+TEST(FilteredEstimate, UncertainPlantRobustBoundTwoWays) {
+  const Plant P = uncontrolled_hill(0.05);
+  const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, filtered_settings());
+  ASSERT_TRUE(res.certificate.passed);
+  EXPECT_TRUE(res.certificate.robust_feasible_at_gamma);
+  const double lmi = hinf::synth::robust_bound(P, res.filter, filtered_settings());
+  std::printf("  γ = %.12g, bounded-real bound %.12g, analysis-LMI bound %.12g\n", res.gamma,
+              res.certificate.robust_bound, lmi);
+  EXPECT_NEAR(lmi / res.certificate.robust_bound, 1.0, 1e-6);
+  const hinf::synth::SynthesisResult kf = hinf::synth::kalman_predictor(P, filtered_settings());
+  EXPECT_TRUE(kf.certificate.passed);
+  EXPECT_NEAR(hinf::synth::robust_bound(P, kf.filter, filtered_settings()) / kf.certificate.robust_bound, 1.0, 1e-6);
+  EXPECT_GE(kf.gamma, res.gamma);
 }
 
 }  // namespace
