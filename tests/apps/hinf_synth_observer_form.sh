@@ -26,6 +26,18 @@ run() {  # expected_rc name args...
   [ "$rc" -eq "$want" ] || { say "$name: exit $rc, expected $want"; cat "$work/$name.out" "$work/$name.err"; }
 }
 
+# tamper MATRIX IN OUT: OUT is the gains file IN with the first entry of filter.MATRIX + 1e-3
+tamper() {
+  python3 - "$1" "$2" "$3" <<'PY'
+import sys
+text = open(sys.argv[2]).read()
+i = text.index("  " + sys.argv[1] + ":\n")
+j = text.index("[", i) + 1
+k = min(text.index(",", j), text.index("]", j))
+open(sys.argv[3], "w").write(text[:j] + repr(float(text[j:k]) + 1e-3) + text[k:])
+PY
+}
+
 dint=$plants/double-integrator.yaml
 run 0 solve_dint solve "$dint" -o "$work/dint.yaml"
 grep -q "^  form: observer$" "$work/dint.yaml" || say "gains file does not say form: observer"
@@ -35,14 +47,7 @@ grep -q "filter form: observer" "$work/solve_dint.out" || say "solve does not sa
 run 0 verify_dint verify "$dint" "$work/dint.yaml"
 grep -q "^verified" "$work/verify_dint.out" || say "verify did not verify"
 # change the first entry of A_F's first row: no longer A − K C
-python3 - "$work/dint.yaml" "$work/tampered.yaml" <<'PY'
-import re, sys
-text = open(sys.argv[1]).read()
-i = text.index("  A_F:\n")
-j = text.index("[", i) + 1
-k = text.index(",", j)
-open(sys.argv[2], "w").write(text[:j] + repr(float(text[j:k]) + 1e-3) + text[k:])
-PY
+tamper A_F "$work/dint.yaml" "$work/tampered.yaml"
 run 1 verify_tampered verify "$dint" "$work/tampered.yaml"
 grep -q "NOT A - K C" "$work/verify_tampered.out" || say "verify does not name the broken realisation"
 mkdir "$work/c"
@@ -70,14 +75,7 @@ python3 -c "import sys; f, p = map(float, sys.argv[1:]); sys.exit(0 if f < p els
   || say "filtered gamma $(gam "$work/dintf.yaml") not below the predictor's $(gam "$work/dint.yaml")"
 run 0 verify_dintf verify "$dintf" "$work/dintf.yaml"
 grep -q "L - L M C, L M, G to" "$work/verify_dintf.out" || say "verify does not check the filtered realisation"
-python3 - "$work/dintf.yaml" "$work/tamperedf.yaml" <<'PY'
-import sys
-text = open(sys.argv[1]).read()
-i = text.index("  D_F:\n")
-j = text.index("[", i) + 1
-k = min(text.index(",", j), text.index("]", j))
-open(sys.argv[2], "w").write(text[:j] + repr(float(text[j:k]) + 1e-3) + text[k:])
-PY
+tamper D_F "$work/dintf.yaml" "$work/tamperedf.yaml"
 run 1 verify_tamperedf verify "$dintf" "$work/tamperedf.yaml"
 grep -q "NOT A - K C, K, L - L M C, L M, G" "$work/verify_tamperedf.out" || say "verify does not name the broken filtered realisation"
 mkdir "$work/c3"

@@ -237,3 +237,24 @@ TEST(GainsFile, ObserverFormKeys) {
   EXPECT_HAS(error_for(replace(observer, "form: observer", "form: observr")), "filter.form");
   EXPECT_HAS(error_for(replace(observer, "{n: 2, m: 1, l: 1}", "{n: 2, m: 1, l: 1, r: 2}")), "r");
 }
+
+// The filtered estimate (docs/maths.md (140)): filter.estimate, filter.M and filter.D_F
+// (required for it and only for it), their shapes.
+TEST(GainsFile, FilteredEstimateKeys) {
+  const std::string filtered = replace(
+      kGood, "filter:\n", "filter:\n  form: observer\n  estimate: filtered\n  K: [[1], [2e-3]]\n  M: [[0.9], [1e-3]]\n  D_F: [[0.5]]\n");
+  const auto g = parse_gains_yaml(filtered, "g.yaml");
+  EXPECT_TRUE(g.filtered);
+  EXPECT_EQ(g.M(0, 0), 0.9);
+  EXPECT_EQ(g.D_F(0, 0), 0.5);
+  EXPECT_FALSE(parse_gains_yaml(kGood, "g.yaml").filtered);
+  EXPECT_HAS(error_for(replace(filtered, "  M: [[0.9], [1e-3]]\n", "")), "missing key 'filter.M'");
+  EXPECT_HAS(error_for(replace(filtered, "  D_F: [[0.5]]\n", "")), "missing key 'filter.D_F'");
+  EXPECT_HAS(error_for(replace(filtered, "M: [[0.9], [1e-3]]", "M: [[0.9]]")), "filter.M: expected 2x1");
+  EXPECT_HAS(error_for(replace(filtered, "D_F: [[0.5]]", "D_F: [[0.5, 1]]")), "filter.D_F: expected 1x1");
+  EXPECT_HAS(error_for(replace(filtered, "form: observer", "form: augmented")),
+             "filter.estimate: only an observer-form filter");
+  EXPECT_HAS(error_for(replace(filtered, "estimate: filtered", "estimate: predicted")),
+             "only a filtered estimate (filter.estimate: filtered) has");
+  EXPECT_HAS(error_for(replace(filtered, "estimate: filtered", "estimate: filterd")), "filter.estimate");
+}

@@ -19,6 +19,7 @@
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "example_plants.hpp"
 #include "random_plants.hpp"
 
 namespace {
@@ -31,23 +32,10 @@ using hinf::Plant;
 using hinf::synth::FormChoice;
 using hinf::synth::Settings;
 
-Plant certain_plant(MatrixXd A, MatrixXd B, MatrixXd C, MatrixXd D, MatrixXd L) {
-  Plant P;
-  P.A = std::move(A);
-  P.B = std::move(B);
-  P.C = std::move(C);
-  P.D = std::move(D);
-  P.L = std::move(L);
-  P.H = MatrixXd(P.A.rows(), 0);
-  P.E = MatrixXd(0, P.A.rows());
-  P.G = MatrixXd(P.A.rows(), 0);
-  return P;
-}
+using hinf::test::certain_plant;
+using hinf::test::triple_integrator_with_input;
 
-Plant scalar(double a, double b, double c, double d, double l) {
-  return certain_plant(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b), MatrixXd::Constant(1, 1, c),
-                       MatrixXd::Constant(1, 1, d), MatrixXd::Constant(1, 1, l));
-}
+Plant scalar(double a, double b, double c, double d, double l) { return hinf::test::scalar_plant(a, b, c, d, l); }
 
 Settings filtered_settings() {
   Settings s;
@@ -55,26 +43,7 @@ Settings filtered_settings() {
   return s;
 }
 
-Plant double_integrator() {
-  const double T = 0.1;
-  MatrixXd A(2, 2), B(2, 1), C(1, 2);
-  A << 1, T, 0, 1;
-  B << T * T / 2, T;
-  C << 1, 0;
-  return certain_plant(A, B, C, MatrixXd::Constant(1, 1, 0.5), MatrixXd::Identity(2, 2));
-}
-
-Plant triple_integrator_with_input() {
-  const double T = 0.05;
-  MatrixXd A(3, 3), B(3, 1), C(1, 3), G(3, 1);
-  A << 1, T, T * T / 2, 0, 1, T, 0, 0, 1;
-  B << T * T * T / 6, T * T / 2, T;
-  G << T * T / 2, T, 0;
-  C << 1, 0, 0;
-  Plant P = certain_plant(A, B, C, MatrixXd::Constant(1, 1, 0.2), MatrixXd::Identity(3, 3));
-  P.G = G;
-  return P;
-}
+Plant double_integrator() { return hinf::test::double_integrator(0.1, 0.5); }
 
 Plant uncontrolled_hill(double delta_bar) {
   hinf::synth::HillPlantSpec s;

@@ -19,6 +19,7 @@
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "example_plants.hpp"
 #include "random_plants.hpp"
 
 namespace {
@@ -30,23 +31,11 @@ using hinf::Plant;
 using hinf::synth::FormChoice;
 using hinf::synth::Settings;
 
-Plant certain_plant(MatrixXd A, MatrixXd B, MatrixXd C, MatrixXd D, MatrixXd L) {
-  Plant P;
-  P.A = std::move(A);
-  P.B = std::move(B);
-  P.C = std::move(C);
-  P.D = std::move(D);
-  P.L = std::move(L);
-  P.H = MatrixXd(P.A.rows(), 0);
-  P.E = MatrixXd(0, P.A.rows());
-  P.G = MatrixXd(P.A.rows(), 0);
-  return P;
-}
+using hinf::test::certain_plant;
+using hinf::test::double_integrator;
+using hinf::test::triple_integrator_with_input;
 
-Plant scalar(double a, double b, double c, double d, double l) {
-  return certain_plant(MatrixXd::Constant(1, 1, a), MatrixXd::Constant(1, 1, b), MatrixXd::Constant(1, 1, c),
-                       MatrixXd::Constant(1, 1, d), MatrixXd::Constant(1, 1, l));
-}
+Plant scalar(double a, double b, double c, double d, double l) { return hinf::test::scalar_plant(a, b, c, d, l); }
 
 // docs/maths.md (127): γ(κ) for the gain κ = k c of a scalar plant.
 double scalar_gamma(double a, double b, double c, double d, double l, double kappa) {
@@ -107,14 +96,6 @@ TEST(ObserverForm, ScalarPlantsMatchTheClosedFormByLmiAndRiccati) {
   }
 }
 
-Plant double_integrator(double T, double sigma) {
-  MatrixXd A(2, 2), B(2, 1), C(1, 2);
-  A << 1, T, 0, 1;
-  B << T * T / 2, T;
-  C << 1, 0;
-  return certain_plant(A, B, C, MatrixXd::Constant(1, 1, sigma), MatrixXd::Identity(2, 2));
-}
-
 // The observer-form LMI and the Riccati route agree on γ to 1e-6, and the filter is
 // (A − KC, K, L): the recovered realisation is exactly the observer's.
 void expect_lmi_equals_riccati(const Plant& P, const char* what) {
@@ -132,18 +113,6 @@ void expect_lmi_equals_riccati(const Plant& P, const char* what) {
 }
 
 TEST(ObserverForm, DoubleIntegratorMatchesRiccati) { expect_lmi_equals_riccati(double_integrator(0.1, 0.5), "double integrator"); }
-
-Plant triple_integrator_with_input() {
-  const double T = 0.05;
-  MatrixXd A(3, 3), B(3, 1), C(1, 3), G(3, 1);
-  A << 1, T, T * T / 2, 0, 1, T, 0, 0, 1;
-  B << T * T * T / 6, T * T / 2, T;
-  G << T * T / 2, T, 0;  // a commanded acceleration enters velocity and position
-  C << 1, 0, 0;
-  Plant P = certain_plant(A, B, C, MatrixXd::Constant(1, 1, 0.2), MatrixXd::Identity(3, 3));
-  P.G = G;
-  return P;
-}
 
 TEST(ObserverForm, TripleIntegratorWithKnownInputMatchesRiccati) {
   expect_lmi_equals_riccati(triple_integrator_with_input(), "triple integrator with a known input");
