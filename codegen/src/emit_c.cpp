@@ -104,7 +104,10 @@ std::string provenance(const std::string& file, const std::string& what,
      << "\n * Sample time: "
      << (g.sample_time ? literal(*g.sample_time, Real::Double) + " s: call the step function once per sample"
                        : std::string("not recorded (the gains file does not state it)"))
-     << "\n * Form: " << (g.observer_form ? "observer (A_F = A - K C, B_F = K, C_F = L)" : "augmented")
+     << "\n * Form: "
+     << (g.filtered       ? "observer, filtered estimate (A_F = A - K C, B_F = K, C_F = L - L M C, D_F = L M)"
+         : g.observer_form ? "observer (A_F = A - K C, B_F = K, C_F = L)"
+                           : "augmented")
      << "\n * Real type: " << type_name(o.real) << "\n */\n";
   return os.str();
 }
@@ -117,8 +120,11 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
   std::ostringstream os;
   os << provenance(p + ".h", "robust H-infinity filter '" + p + "' (C99)", g, o)
      << "/*\n"
-     << " * The filter (a one-step predictor, docs/maths.md (5)-(6)):\n"
-     << " *   z(k)     = C_F x_F(k)                 estimate of z(k) from y(0..k-1)\n"
+     << (d.feedthrough
+             ? " * The filter (a filtered estimate, docs/maths.md (5)-(6), (140)):\n"
+               " *   z(k)     = C_F x_F(k) + D_F y(k)      estimate of z(k) from y(0..k)\n"
+             : " * The filter (a one-step predictor, docs/maths.md (5)-(6)):\n"
+               " *   z(k)     = C_F x_F(k)                 estimate of z(k) from y(0..k-1)\n")
      << " *   x_F(k+1) = A_F x_F(k) + B_F y(k)\n"
      << " *   x_F(0)   = pinv(C_F) z0               (pseudo-inverse computed offline)\n"
      << " * No heap, no recursion, no libm, fixed loop bounds; the state is the\n"
@@ -134,7 +140,7 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "typedef struct {\n  " << r << " x[" << P << "_NX];\n} " << p << "_state;\n\n"
      << "/* Sets x_F(0) = pinv(C_F) z0, z0 an initial estimate of z. */\n"
      << "void " << p << "_init(" << p << "_state *s, const " << r << " z0[" << P << "_NZ]);\n\n"
-     << "/* Writes z = C_F x_F(k), the estimate of z(k), then advances\n"
+     << "/* Writes z = " << (d.feedthrough ? "C_F x_F(k) + D_F y(k)" : "C_F x_F(k)") << ", the estimate of z(k), then advances\n"
      << " * x_F(k+1) = A_F x_F(k) + B_F y(k). y and z must not overlap s. */\n"
      << "void " << p << "_step(" << p << "_state *s, const " << r << " y[" << P << "_NY], " << r
      << " z[" << P << "_NZ]);\n\n"
@@ -161,6 +167,9 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "/* C_F (l x n) */\n"
      << "static const " << r << " " << p << "_C_F[" << P << "_NZ][" << P << "_NX] = "
      << rows_initializer(d.C_F, o.real) << ";\n\n"
+     << (d.feedthrough ? "/* D_F (l x m) */\nstatic const " + r + " " + p + "_D_F[" + P + "_NZ][" + P + "_NY] = " +
+                             rows_initializer(d.D_F, o.real) + ";\n\n"
+                       : std::string())
      << "/* pinv(C_F) (n x l), Moore-Penrose pseudo-inverse */\n"
      << "static const " << r << " " << p << "_C_F_pinv[" << P << "_NX][" << P << "_NZ] = "
      << rows_initializer(d.C_F_pinv, o.real) << ";\n\n"
@@ -183,6 +192,8 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "    for (int j = 0; j < " << P << "_NX; ++j) {\n"
      << "      acc += " << p << "_C_F[i][j] * s->x[j];\n"
      << "    }\n"
+     << (d.feedthrough ? "    for (int j = 0; j < " + P + "_NY; ++j) {\n      acc += " + p + "_D_F[i][j] * y[j];\n    }\n"
+                       : std::string())
      << "    z[i] = acc;\n"
      << "  }\n"
      << "  for (int i = 0; i < " << P << "_NX; ++i) {\n"
@@ -307,11 +318,9 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
                 "the filter has a known input (filter.G_F, " + std::to_string(gains.G_F.cols()) +
                     " columns), which the generated C does not take yet: its step function has no u argument, "
                     "and C without it would fly a different filter; use the runtime's LtiFilter::step(y, u)");
-  if (gains.filtered)
-    throw Error(ErrorCode::InvalidInput,
-                "the filter gives a filtered estimate (filter.estimate: filtered, feedthrough filter.D_F), which the "
-                "generated C does not take yet: its output is C_F x_F(k) only, and C without D_F y(k) would fly a "
-                "different filter; use the runtime's LtiFilter with D_F");
+  if (gains.filtered && (gains.D_F.rows() != gains.C_F.rows() || gains.D_F.cols() != gains.B_F.cols() ||
+                         !gains.D_F.allFinite()))
+    throw Error(ErrorCode::InvalidInput, "filter.D_F must be l x m with finite entries");
 
   const FilterData data = detail::make_filter_data(gains, options.real);
   const TestVectors tv = detail::make_test_vectors(data, options.real,

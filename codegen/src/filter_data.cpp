@@ -60,7 +60,9 @@ long double gamma_k(long double k, long double u) { return k * u / (1.0L - k * u
 // powers of the (stable) A rather than powers of |A| keeps the bound realistic.
 // Returns, per step and output, a bound on |computed z(k) − exact z(k)|:
 //   |C e(k)| + γ_n |C| |x̂_k|  with |C e(k)| bounded through |C A^i|.
-MatL running_bound(const MatL& A, const MatL& B, const MatL& C, const MatL& P, const VecL& z0,
+// With a feedthrough D (a filtered estimate, (140)) the output's own rounding is
+// γ_{n+m} (|C| |x̂_k| + |D| |y_k|) instead of γ_n |C| |x̂_k|.
+MatL running_bound(const MatL& A, const MatL& B, const MatL& C, const MatL* D, const MatL& P, const VecL& z0,
                    const MatL& Y, const MatL& X, long double u) {
   const Eigen::Index steps = Y.rows();
   const auto n = static_cast<long double>(A.rows());
@@ -87,8 +89,10 @@ MatL running_bound(const MatL& A, const MatL& B, const MatL& C, const MatL& P, c
       ce += abs_cpow[ku - 1 - j] * delta[j];
     }
     const VecL xa = X.col(k).cwiseAbs() + e;  // bound on |computed x(k)|
-    bound.row(k) = (ce + gamma_k(n, u) * (Ca * xa)).transpose();
-    delta.push_back(gamma_k(n + m, u) * (Aa * xa + Ba * Y.row(k).transpose().cwiseAbs()));
+    const VecL ya = Y.row(k).transpose().cwiseAbs();
+    const VecL output = D ? VecL(gamma_k(n + m, u) * (Ca * xa + D->cwiseAbs() * ya)) : VecL(gamma_k(n, u) * (Ca * xa));
+    bound.row(k) = (ce + output).transpose();
+    delta.push_back(gamma_k(n + m, u) * (Aa * xa + Ba * ya));
   }
   return bound;
 }
@@ -100,6 +104,8 @@ FilterData make_filter_data(const runtime_yaml::GainsFile& gains, Real real) {
   d.A_F = round_to(gains.A_F, real, "filter.A_F");
   d.B_F = round_to(gains.B_F, real, "filter.B_F");
   d.C_F = round_to(gains.C_F, real, "filter.C_F");
+  d.feedthrough = gains.filtered;
+  d.D_F = d.feedthrough ? round_to(gains.D_F, real, "filter.D_F") : Eigen::MatrixXd::Zero(d.C_F.rows(), d.B_F.cols());
   // Pseudo-inverse of the C_F that is emitted (after rounding), computed in double.
   const Eigen::MatrixXd pinv = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(d.C_F)
                                    .pseudoInverse();
@@ -124,7 +130,8 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
     for (Eigen::Index j = 0; j < m; ++j) tv.y(k, j) = rnd(rng.uniform());
 
   const MatL A = data.A_F.cast<long double>(), B = data.B_F.cast<long double>(),
-             C = data.C_F.cast<long double>(), P = data.C_F_pinv.cast<long double>();
+             C = data.C_F.cast<long double>(), D = data.D_F.cast<long double>(),
+             P = data.C_F_pinv.cast<long double>();
   const VecL z0 = tv.z0.cast<long double>();
   const MatL Y = tv.y.cast<long double>();
   MatL X(n, steps);
@@ -132,7 +139,7 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
   VecL x = P * z0;
   for (Eigen::Index k = 0; k < steps; ++k) {
     X.col(k) = x;
-    Z.row(k) = (C * x).transpose();
+    Z.row(k) = (C * x + D * Y.row(k).transpose()).transpose();
     x = A * x + B * Y.row(k).transpose();
   }
 
@@ -148,8 +155,9 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
 
   const long double u = unit_roundoff(real);
   const long double u_ref = std::numeric_limits<long double>::epsilon() / 2;
-  const MatL bound = running_bound(A, B, C, P, z0, Y, X, u) +
-                     running_bound(A, B, C, P, z0, Y, X, u_ref) +
+  const MatL* DF = data.feedthrough ? &D : nullptr;
+  const MatL bound = running_bound(A, B, C, DF, P, z0, Y, X, u) +
+                     running_bound(A, B, C, DF, P, z0, Y, X, u_ref) +
                      u * Z.cwiseAbs();  // the expected values are stored rounded
   // The driver's subtraction |z − z_expected| is itself rounded (relative u).
   const long double tol = bound.maxCoeff() * (1.0L + 4.0L * u);

@@ -13,6 +13,8 @@ namespace hinf::codegen::detail {
 // Every entry is exactly representable in the target real type.
 struct FilterData {
   Eigen::MatrixXd A_F, B_F, C_F;  // docs/maths.md (5)–(6)
+  Eigen::MatrixXd D_F;            // l × m feedthrough of a filtered estimate (140); zero without
+  bool feedthrough = false;       // the gains file has D_F (filter.estimate: filtered)
   Eigen::MatrixXd C_F_pinv;       // Moore–Penrose pseudo-inverse of C_F (n × l)
 };
 
@@ -27,7 +29,8 @@ struct TestVectors {
 };
 
 // Inputs: splitmix64(seed) mapped to uniform [-1, 1), rounded to the real type.
-// Expected outputs: init + docs/maths.md (5)–(6) evaluated in long double on the emitted data.
+// Expected outputs: init + docs/maths.md (5)–(6) (with D_F y(k), (140)) evaluated in long
+// double on the emitted data.
 // Tolerance: an a-priori running rounding-error bound (Higham, "Accuracy and
 // Stability of Numerical Algorithms", §3.1: |fl(aᵀb) − aᵀb| ≤ γ_k |a|ᵀ|b|,
 // γ_k = k u / (1 − k u)) propagated through the recursion with |A_F|, for the target

@@ -90,6 +90,16 @@ runtime_yaml::GainsFile random_gains(std::uint64_t seed, int n, int m, int l) {
   return g;
 }
 
+runtime_yaml::GainsFile random_filtered_gains(std::uint64_t seed, int n, int m, int l) {
+  runtime_yaml::GainsFile g = random_gains(seed, n, m, l);
+  g.observer_form = true;
+  g.filtered = true;
+  g.K = g.B_F;
+  g.M = random_matrix(seed + 3, n, m);
+  g.D_F = random_matrix(seed + 4, l, m);
+  return g;
+}
+
 namespace {
 std::string yaml_matrix(const Eigen::MatrixXd& m) {
   std::ostringstream os;
@@ -113,8 +123,12 @@ std::string gains_yaml(const runtime_yaml::GainsFile& g) {
   os << "dimensions: {n: " << g.A_F.rows() << ", m: " << g.B_F.cols() << ", l: " << g.C_F.rows()
      << "}\n";
   if (g.gamma) os << "gamma: " << *g.gamma << "\n";
-  os << "filter:\n  A_F:" << yaml_matrix(g.A_F) << "  B_F:" << yaml_matrix(g.B_F)
-     << "  C_F:" << yaml_matrix(g.C_F);
+  os << "filter:\n";
+  if (g.observer_form) os << "  form: observer\n";
+  if (g.filtered) os << "  estimate: filtered\n";
+  os << "  A_F:" << yaml_matrix(g.A_F) << "  B_F:" << yaml_matrix(g.B_F) << "  C_F:" << yaml_matrix(g.C_F);
+  if (g.observer_form) os << "  K:" << yaml_matrix(g.K);
+  if (g.filtered) os << "  M:" << yaml_matrix(g.M) << "  D_F:" << yaml_matrix(g.D_F);
   return os.str();
 }
 
@@ -130,12 +144,12 @@ Eigen::MatrixXd pinv_svd(const Eigen::MatrixXd& C) {
 }
 
 Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
-                                  const Eigen::MatrixXd& C, const Eigen::VectorXd& z0,
-                                  const Eigen::MatrixXd& Y) {
+                                  const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
+                                  const Eigen::VectorXd& z0, const Eigen::MatrixXd& Y) {
   Eigen::VectorXd x = pinv_svd(C) * z0;
   Eigen::MatrixXd Z(Y.rows(), C.rows());
   for (Eigen::Index k = 0; k < Y.rows(); ++k) {
-    Z.row(k) = (C * x).transpose();
+    Z.row(k) = (C * x + D * Y.row(k).transpose()).transpose();
     x = A * x + B * Y.row(k).transpose();
   }
   return Z;

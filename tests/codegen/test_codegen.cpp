@@ -104,7 +104,7 @@ void expect_no_heap_or_libm(const std::string& object) {
 }
 
 struct Reference {
-  Eigen::MatrixXd A, B, C;  // coefficients the code implements
+  Eigen::MatrixXd A, B, C, D;  // coefficients the code implements (D = 0 without a feedthrough)
   Eigen::VectorXd z0;
   Eigen::MatrixXd Y;        // kSteps × m
   Eigen::MatrixXd Z;        // kSteps × l, double Eigen loop
@@ -116,14 +116,17 @@ Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed) 
   r.A = is_float ? hinf::test::to_float(g.A_F) : g.A_F;
   r.B = is_float ? hinf::test::to_float(g.B_F) : g.B_F;
   r.C = is_float ? hinf::test::to_float(g.C_F) : g.C_F;
+  const Eigen::MatrixXd D = g.filtered ? g.D_F : Eigen::MatrixXd::Zero(g.C_F.rows(), g.B_F.cols());
+  r.D = is_float ? hinf::test::to_float(D) : D;
   r.z0 = hinf::test::random_matrix(seed, g.C_F.rows(), 1).col(0) * 3.0;
   r.Y = hinf::test::random_matrix(seed + 7, kSteps, g.B_F.cols()) * 2.0;
   if (is_float) {
     r.z0 = hinf::test::to_float(r.z0);
     r.Y = hinf::test::to_float(r.Y);
   }
-  r.Z = hinf::test::reference_outputs(r.A, r.B, r.C, r.z0, r.Y);
-  hinf::runtime::LtiFilter lti(r.A, r.B, r.C);
+  r.Z = hinf::test::reference_outputs(r.A, r.B, r.C, r.D, r.z0, r.Y);
+  hinf::runtime::LtiFilter lti(r.A, r.B, r.C, Eigen::MatrixXd::Zero(r.A.rows(), 0),
+                               g.filtered ? r.D : Eigen::MatrixXd(0, 0));
   lti.init(r.z0);
   r.Z_lti.resize(r.Y.rows(), r.C.rows());
   for (Eigen::Index k = 0; k < r.Y.rows(); ++k)
@@ -136,7 +139,8 @@ Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed) 
 // γ_k = k u/(1 − k u), X a bound on ‖x(k)‖∞,
 //   ‖e(0)‖ ≤ (γ_l + 2u)‖pinv‖ ‖z0‖       (float dot products + pinv rounded to float)
 //   ‖δ_j‖ ≤ γ_{n+m}(‖A‖ X + ‖B‖ ‖y‖max)  (rounding in one step)
-//   |z err(k)| ≤ ‖C A^k‖ ‖e(0)‖ + Σ_{i<k} ‖C A^i‖ δ + γ_n ‖C‖ X.
+//   |z err(k)| ≤ ‖C A^k‖ ‖e(0)‖ + Σ_{i<k} ‖C A^i‖ δ + γ_n ‖C‖ X,
+// the last term γ_{n+m} (‖C‖ X + ‖D‖ ‖y‖max) with the feedthrough D of a filtered estimate.
 double float_error_bound(const Reference& r) {
   const double u = std::ldexp(1.0, -24);
   const auto gam = [u](double k) { return k * u / (1.0 - k * u); };
@@ -161,7 +165,9 @@ double float_error_bound(const Reference& r) {
     max_ca = std::max(max_ca, ca);
     power = r.A * power;
   }
-  return max_ca * e0 + sum_ca * delta + gam(n) * norm(r.C) * X;
+  const double output = r.D.isZero(0.0) ? gam(n) * norm(r.C) * X
+                                         : gam(n + m) * (norm(r.C) * X + norm(r.D) * r.Y.cwiseAbs().maxCoeff());
+  return max_ca * e0 + sum_ca * delta + output;
 }
 
 // The program whose `codegen` subcommand is tested: hinf-synth, or $HINF_CODEGEN_CLI.
@@ -264,6 +270,14 @@ TEST(CodegenCompiled, RandomGains7x4x1Float) {
 }
 
 // The generated check driver must be able to fail: a perturbed coefficient is caught.
+// The filtered estimate's feedthrough z = C_F x_F + D_F y (docs/maths.md (140)).
+TEST(CodegenCompiled, FilteredEstimate4x2x3Double) {
+  check_generated(hinf::test::random_filtered_gains(41, 4, 2, 3), "fnav", Real::Double, 41);
+}
+TEST(CodegenCompiled, FilteredEstimate4x2x3Float) {
+  check_generated(hinf::test::random_filtered_gains(42, 4, 2, 3), "fnavf", Real::Float, 42);
+}
+
 TEST(CodegenCompiled, CheckDriverDetectsAPerturbedCoefficient) {
   for (const Real real : {Real::Double, Real::Float}) {
     const bool is_float = real == Real::Float;
