@@ -85,9 +85,27 @@ void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
   }
 }
 
+bool IterationTable::heartbeat(const sdp::Progress& r) {
+  if (r.newton_step && !estimated_ && r.centering == 0 && r.newton == 1) {  // the first Newton iteration has ended
+    estimated_ = true;
+    if (r.elapsed_s >= kEstimateAfterSeconds)
+      std::fprintf(stderr,
+                   "first Newton iteration took %.1f s; the solves measured in docs/benchmarks.md took %d-%d Newton "
+                   "iterations, so expect roughly %.0f-%.0f s for this solve (more for the back-off and the bracket)\n",
+                   r.elapsed_s, kFewestNewton, kMostNewton, kFewestNewton * r.elapsed_s, kMostNewton * r.elapsed_s);
+  }
+  if (!r.assembling) return false;
+  if (r.elapsed_s - last_line_s_ >= kQuietSeconds) {
+    std::fprintf(stderr, "%5d        %10.3e  (assembling the Newton system, %.1f s)\n", r.phase, r.t, r.elapsed_s);
+    last_line_s_ = r.elapsed_s;
+  }
+  return true;
+}
+
 void IterationTable::operator()(const synth::IterationReport& report) {
   using synth::SolveStage;
   const sdp::Progress& r = report.progress;
+  if (heartbeat(r)) return;
   if (r.newton_step && r.elapsed_s - last_line_s_ < kQuietSeconds) return;  // only on large problems
   if (!started_ || report.stage != stage_) {
     if (report.stage == SolveStage::Backoff)

@@ -53,6 +53,15 @@ class IterationTable {
   // A line per Newton iteration only after this many seconds without a line (large
   // problems, whose centrings take minutes), so that -v shows progress within seconds.
   static constexpr double kQuietSeconds = 2.0;
+  // Newton iterations of the solves measured in docs/benchmarks.md ("Progress with -v"):
+  // the range the time estimate multiplies the first iteration's time by; printed only
+  // when that iteration took at least kEstimateAfterSeconds.
+  static constexpr int kFewestNewton = 35, kMostNewton = 160;
+  static constexpr double kEstimateAfterSeconds = 1.0;
+  // A line while a Newton iteration's Hessian is assembled, and the estimate once the
+  // first iteration has ended; true when the report was handled here.
+  bool heartbeat(const sdp::Progress& r);
+  bool estimated_ = false;
   bool started_ = false;
   synth::SolveStage stage_ = synth::SolveStage::Synthesis;
   double last_line_s_ = 0;

@@ -77,7 +77,7 @@ bool LogDetBarrier::derivatives(const Eigen::VectorXd& z) {
   // ∂(−log det slack)/∂xᵢ = tr(slack⁻¹ Mᵢ) = tr(W Mᵢ).
   Eigen::VectorXd gx;
   lmi_.trace_products(W_, gx);
-  if (!lmi_.hessian(W_, Hs_, [this] { return past_deadline(); })) return false;
+  if (!lmi_.hessian(W_, Hs_, [this] { return beat_and_check_deadline(); })) return false;
   grad_phi_.resize(d);
   hess_.resize(d, d);
   grad_phi_.head(n_) = gx;
@@ -183,7 +183,7 @@ bool LogDetBarrier::factor_jacobian(const Eigen::VectorXd& z) {
   lmi_.scaled_jacobian(Tsc_, G_, f);
   // H_mod, plus the ball's Hessian
   Wm_.noalias() = Tsc_.topRows(f).transpose() * Tsc_.topRows(f);
-  if (!lmi_.hessian(Wm_, Hmod_, [this] { return past_deadline(); })) return false;
+  if (!lmi_.hessian(Wm_, Hmod_, [this] { return beat_and_check_deadline(); })) return false;
   add_ball_hessian(z.head(n_), Hmod_);
   mod_ldlt_.compute(Hmod_);
   if (mod_ldlt_.info() != Eigen::Success) return false;

@@ -6,6 +6,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <chrono>
+#include <functional>
 
 #include "hinf/lmi/lmi_problem.hpp"
 
@@ -27,6 +28,13 @@ class LogDetBarrier {
   // kept within one term's work, not one Newton iteration's).
   void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
   bool past_deadline() const { return std::chrono::steady_clock::now() > deadline_; }
+  // Called once per LMI term of every Hessian assembly (progress of a long one), if set.
+  void set_heartbeat(std::function<void()> heartbeat) { heartbeat_ = std::move(heartbeat); }
+  // The Hessian assembly's per-term check: the heartbeat, then the deadline.
+  bool beat_and_check_deadline() const {
+    if (heartbeat_) heartbeat_();
+    return past_deadline();
+  }
 
   // Each returns false when z is outside the barrier's domain (the Cholesky factor
   // of the slack fails or ‖x‖ ≥ ρ); Ipopt then shortens its step.
@@ -74,6 +82,7 @@ class LogDetBarrier {
   int N_;
   double t_ = 1.0;
   std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
+  std::function<void()> heartbeat_;
 
   // cache keyed by z
   Eigen::VectorXd z_factored_, z_derivs_;

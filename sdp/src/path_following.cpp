@@ -109,6 +109,7 @@ class PathFollower {
   bool follow(LogDetBarrier& b, VectorXd& z, Phase phase);
   double initial_t(LogDetBarrier& b, const VectorXd& z) const;
   CenteringOptions centering_options(const LogDetBarrier& b, Phase phase, int centring) const;
+  std::function<void()> heartbeat(Phase phase) const;
   CenteringResult centre(LogDetBarrier& b, const VectorXd& z, Phase phase, const CenteringOptions& co);
   Recovery recover(LogDetBarrier& b, Phase phase);
   double accurate_gap(LogDetBarrier& b, const VectorXd& z, double t) const;
@@ -181,6 +182,19 @@ double PathFollower::accurate_gap(LogDetBarrier& b, const VectorXd& z, double t)
 // The last centred gap, relative to |objective| there.
 double PathFollower::last_relative_gap(const LogDetBarrier& b) const {
   return s_.last_gap / std::max(std::abs(b.linear_objective(s_.last_centred)), kObjectiveFloor);
+}
+
+// The observer's report that a Hessian is being assembled (none without an observer).
+std::function<void()> PathFollower::heartbeat(Phase phase) const {
+  if (!observer_) return nullptr;
+  return [this, phase] {
+    Progress p;
+    p.phase = static_cast<int>(phase);
+    p.t = s_.t;
+    p.elapsed_s = seconds_since(start_);
+    p.assembling = true;
+    observer_(p);
+  };
 }
 
 CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase phase, int centring) const {
@@ -379,6 +393,7 @@ bool PathFollower::find_feasible(VectorXd& x) {
     sol_.phase1_path.clear();
     LogDetBarrier b1(lmi_, c_, opt_.lmi_margin, r1, true, eta);
     b1.set_deadline(deadline());
+    b1.set_heartbeat(heartbeat(Phase::FindFeasible));
     z.head(n_) = x;
     z(n_) = lmax + 1.0;
     ok = follow(b1, z, Phase::FindFeasible);
@@ -401,6 +416,7 @@ Solution PathFollower::solve(const VectorXd& x0) {
   }
   LogDetBarrier b2(lmi_, c_, opt_.lmi_margin, opt_.feasibility_radius, false);
   b2.set_deadline(deadline());
+  b2.set_heartbeat(heartbeat(Phase::Minimise));
   const bool ok = follow(b2, x, Phase::Minimise);
   sol_.x = x;
   sol_.objective = c_.dot(x);

@@ -40,6 +40,10 @@ struct Progress {
   // true: one Newton iteration inside centring `centering` (newton = its index, lambda2
   // its decrement²; objective and gap NaN); false: the centring has ended
   bool newton_step = false;
+  // true: a Newton iteration's Hessian is being assembled (reported once per LMI term, so
+  // that a problem whose one iteration takes minutes still shows life; only phase, t and
+  // elapsed_s are set)
+  bool assembling = false;
 };
 using ProgressObserver = std::function<void(const Progress&)>;
 
