@@ -416,3 +416,34 @@ TEST(LmiLayer, IpoptDerivativeCheckerPhase2) {
 }
 
 }  // namespace
+
+// Progress of a solve (path_following.hpp): while a Newton iteration's Hessian is assembled
+// the observer hears `assembling` reports (once per LMI term, so that a problem whose one
+// iteration takes minutes still shows life), in both phases, with time that never goes
+// back; the Newton-step and centring reports still come, and the solution is the same as
+// without an observer.
+TEST(PathFollowing, ObserverHearsTheHessianAssembly) {
+  std::mt19937 g(31);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
+  const auto T = hinf::synth::build_theorem1(P);
+  const VectorXd c = T.lmi.cost_of(T.g);
+  int assembling[3] = {0, 0, 0}, newton_steps = 0, centrings = 0;
+  double last_time = 0;
+  bool monotone = true;
+  const auto sol = hinf::sdp::minimize_linear(T.lmi, c, hinf::sdp::Options{}, VectorXd(),
+                                              [&](const hinf::sdp::Progress& p) {
+                                                if (p.assembling) ++assembling[p.phase];
+                                                else if (p.newton_step) ++newton_steps;
+                                                else ++centrings;
+                                                monotone = monotone && p.elapsed_s >= last_time;
+                                                last_time = p.elapsed_s;
+                                              });
+  const auto quiet = hinf::sdp::minimize_linear(T.lmi, c, hinf::sdp::Options{});
+  ASSERT_EQ(sol.status, hinf::sdp::Status::Solved);
+  EXPECT_GT(assembling[1], 0);
+  EXPECT_GT(assembling[2], 0);
+  EXPECT_GT(newton_steps, 0);
+  EXPECT_GT(centrings, 0);
+  EXPECT_TRUE(monotone);
+  EXPECT_EQ(sol.objective, quiet.objective);  // observing changes nothing
+}
