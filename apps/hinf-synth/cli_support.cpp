@@ -6,6 +6,7 @@
 #include "hinf/common/gnuplot.hpp"
 
 #include "hinf/common/number_text.hpp"
+#include "hinf/sdp/time_model.hpp"
 
 #include <cmath>
 #include <utility>
@@ -63,6 +64,14 @@ hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Pla
   return f;
 }
 
+std::string seconds_text(double s) {
+  char buf[32];
+  if (s < 100) std::snprintf(buf, sizeof buf, "%.2g s", s);
+  else if (s < 6000) std::snprintf(buf, sizeof buf, "%.2g min", s / 60);
+  else std::snprintf(buf, sizeof buf, "%.2g h", s / 3600);
+  return buf;
+}
+
 void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
   auto range = [&](const char* name, const Eigen::MatrixXd& M) {
     double lo = INFINITY, hi = 0;
@@ -89,14 +98,14 @@ bool IterationTable::heartbeat(const sdp::Progress& r) {
   if (r.newton_step && !estimated_ && r.centering == 0 && r.newton == 1) {  // the first Newton iteration has ended
     estimated_ = true;
     if (r.elapsed_s >= kEstimateAfterSeconds)
-      std::fprintf(stderr,
-                   "first Newton iteration took %.1f s; the solves measured in docs/benchmarks.md took %d-%d Newton "
-                   "iterations, so expect roughly %.0f-%.0f s for this solve (more for the back-off and the bracket)\n",
-                   r.elapsed_s, kFewestNewton, kMostNewton, kFewestNewton * r.elapsed_s, kMostNewton * r.elapsed_s);
+      log_->line("first Newton iteration took %.1f s; the solves measured in docs/benchmarks.md took %d-%d Newton "
+                 "iterations, so expect roughly %.0f-%.0f s for this solve (more for the back-off and the bracket)",
+                 r.elapsed_s, sdp::kFewestNewtonIterations, sdp::kMostNewtonIterations,
+                 sdp::kFewestNewtonIterations * r.elapsed_s, sdp::kMostNewtonIterations * r.elapsed_s);
   }
   if (!r.assembling) return false;
   if (r.elapsed_s - last_line_s_ >= kQuietSeconds) {
-    std::fprintf(stderr, "%5d        %10.3e  (assembling the Newton system, %.1f s)\n", r.phase, r.t, r.elapsed_s);
+    log_->line("%5d        %10.3e  (assembling the Newton system, %.1f s)", r.phase, r.t, r.elapsed_s);
     last_line_s_ = r.elapsed_s;
   }
   return true;
@@ -105,26 +114,28 @@ bool IterationTable::heartbeat(const sdp::Progress& r) {
 void IterationTable::operator()(const synth::IterationReport& report) {
   using synth::SolveStage;
   const sdp::Progress& r = report.progress;
+  log_->set_activity("phase " + std::to_string(r.phase) + ", centring " + std::to_string(r.centering) +
+                     (r.newton_step ? ", Newton iteration " + std::to_string(r.newton) : std::string()));
   if (heartbeat(r)) return;
   if (r.newton_step && r.elapsed_s - last_line_s_ < kQuietSeconds) return;  // only on large problems
   if (!started_ || report.stage != stage_) {
     if (report.stage == SolveStage::Backoff)
-      std::fprintf(stderr, "==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====\n");
-    std::fprintf(stderr, "phase  step  %10s  %16s  %10s  newton  %9s  time[s]\n", "t", "objective", "gap", "lambda^2");
+      log_->line("==== gamma back-off: maximise the LMI margin at (1+b) gamma* ====");
+    log_->line("phase  step  %10s  %16s  %10s  newton  %9s  time[s]", "t", "objective", "gap", "lambda^2");
     started_ = true;
     stage_ = report.stage;
     last_phase_ = 0;
   }
   if (r.phase == 2 && last_phase_ != 2)
-    std::fprintf(stderr, "---- phase 2: minimise %s ----\n", report.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
+    log_->line("---- phase 2: minimise %s ----", report.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
   last_phase_ = r.phase;
   last_line_s_ = r.elapsed_s;
   if (r.newton_step)
-    std::fprintf(stderr, "%5d  %4d  %10.3e  %16s  %10s  %6d  %9.2e  %7.3f  (newton iteration in progress)\n", r.phase,
-                 r.centering, r.t, "", "", r.newton, r.lambda2, r.elapsed_s);
+    log_->line("%5d  %4d  %10.3e  %16s  %10s  %6d  %9.2e  %7.3f  (newton iteration in progress)", r.phase,
+               r.centering, r.t, "", "", r.newton, r.lambda2, r.elapsed_s);
   else
-    std::fprintf(stderr, "%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f\n", r.phase, r.centering, r.t,
-                 r.objective, r.gap, r.newton, r.lambda2, r.elapsed_s);
+    log_->line("%5d  %4d  %10.3e  %16.10e  %10.3e  %6d  %9.2e  %7.3f", r.phase, r.centering, r.t, r.objective,
+               r.gap, r.newton, r.lambda2, r.elapsed_s);
 }
 
 void write_png_by_gnuplot(const std::string& png, const std::string& csv,

@@ -10,6 +10,7 @@
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "verbose_log.hpp"
 
 namespace hinf::cli {
 
@@ -34,6 +35,8 @@ hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Pla
                                 const std::string& path);
 // "%.10g"
 std::string num(double v);
+// A duration for people: "0.12 s", "45 s", "3.2 min", "1.5 h" (two significant digits).
+std::string seconds_text(double s);
 // A PNG drawn by gnuplot from CSV data (sweep --plot, compare --plot): `script(data_path,
 // png_path)` is the gnuplot script; the data and script are scratch files beside `png`,
 // removed on return; the PNG is written atomically and never replaces one of `inputs`.
@@ -43,24 +46,24 @@ void write_png_by_gnuplot(const std::string& png, const std::string& csv,
                           const std::vector<std::string>& inputs);
 // Coefficient ranges of the plant matrices (docs/maths.md [D5]), for --verbose.
 void print_coefficient_ranges(const hinf::Plant& plant, std::FILE* out);
-// SDP-solver-style iteration table on stderr.
-// The --verbose iteration table on stderr (a header whenever a new SDP starts).
+// The --verbose iteration table (a header whenever a new SDP starts), printed through a
+// VerboseLog that outlives it.
 class IterationTable {
  public:
+  explicit IterationTable(VerboseLog& log) : log_(&log) {}
   void operator()(const synth::IterationReport& r);
 
  private:
   // A line per Newton iteration only after this many seconds without a line (large
   // problems, whose centrings take minutes), so that -v shows progress within seconds.
   static constexpr double kQuietSeconds = 2.0;
-  // Newton iterations of the solves measured in docs/benchmarks.md ("Progress with -v"):
-  // the range the time estimate multiplies the first iteration's time by; printed only
-  // when that iteration took at least kEstimateAfterSeconds.
-  static constexpr int kFewestNewton = 35, kMostNewton = 160;
+  // The measured time estimate is printed once the first Newton iteration has ended, if it
+  // took at least this long.
   static constexpr double kEstimateAfterSeconds = 1.0;
   // A line while a Newton iteration's Hessian is assembled, and the estimate once the
   // first iteration has ended; true when the report was handled here.
   bool heartbeat(const sdp::Progress& r);
+  VerboseLog* log_;
   bool estimated_ = false;
   bool started_ = false;
   synth::SolveStage stage_ = synth::SolveStage::Synthesis;

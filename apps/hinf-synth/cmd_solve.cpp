@@ -2,10 +2,12 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
+#include "hinf/sdp/time_model.hpp"
 #include "hinf/synth/gains_output.hpp"
 
 namespace hinf::cli {
@@ -22,24 +24,30 @@ void add_solve(CLI::App& app, Action& action) {
     action = [=]() -> int {
       synth::SynthConfig cfg = synth::load_config(*config);
       const bool v = *verbose || cfg.settings.verbose;
+      std::optional<VerboseLog> log;
       if (v) {
         print_coefficient_ranges(cfg.plant, stderr);
+        log.emplace(stderr);
         const synth::ProblemSize size = synth::problem_size(cfg.plant, cfg.settings);
-        std::fprintf(stderr, "%s form: LMI order %d, %d variables; solver memory estimate %.0f MiB (limit "
-                     "max_memory_mb = %.0f)\n", to_string(size.form), size.lmi_order, size.variables,
-                     std::ceil(size.memory_mib), cfg.settings.max_memory_mb);
+        log->line("%s form: LMI order %d, %d variables; solver memory estimate %.0f MiB (limit max_memory_mb = %.0f)",
+                  to_string(size.form), size.lmi_order, size.variables, std::ceil(size.memory_mib),
+                  cfg.settings.max_memory_mb);
+        log->line("time estimate (docs/benchmarks.md \"Time\"): %s per Newton iteration, %s to %s for %d-%d of them, "
+                  "on a machine like the development one", seconds_text(size.newton_iteration_s).c_str(),
+                  seconds_text(size.fewest_s).c_str(), seconds_text(size.most_s).c_str(),
+                  sdp::kFewestNewtonIterations, sdp::kMostNewtonIterations);
       }
       const synth::SynthesisResult r =
-          v ? synth::synthesize(cfg.plant, cfg.settings, IterationTable())
+          v ? synth::synthesize(cfg.plant, cfg.settings, IterationTable(*log))
             : synth::synthesize(cfg.plant, cfg.settings);
       if (v) {
-        std::fprintf(stderr, "LMI order %d, %d variables; scaling applied (powers of two, exact): %s\n",
-                     r.solver.lmi_order, r.solver.variables, r.solver.scaling.c_str());
+        log->line("LMI order %d, %d variables; scaling applied (powers of two, exact): %s", r.solver.lmi_order,
+                  r.solver.variables, r.solver.scaling.c_str());
         if (r.solver.gap_certified)
-          std::fprintf(stderr, "optimality gap certified by a dual point: gamma*^2 in [%.10g, %.10g]\n",
-                       r.solver.dual_bound_gamma_squared, r.solver.optimal_gamma * r.solver.optimal_gamma);
+          log->line("optimality gap certified by a dual point: gamma*^2 in [%.10g, %.10g]",
+                    r.solver.dual_bound_gamma_squared, r.solver.optimal_gamma * r.solver.optimal_gamma);
         else
-          std::fprintf(stderr, "optimality gap not certified: %s\n", r.solver.gap_detail.c_str());
+          log->line("optimality gap not certified: %s", r.solver.gap_detail.c_str());
       }
       hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256, cfg.sample_time()}), {*config});
       std::cout << "gamma = " << num(r.gamma) << " (nominal Hinf norm " << num(r.certificate.hinf_norm_nominal)

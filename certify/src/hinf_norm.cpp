@@ -38,8 +38,9 @@
 
 #include "frequency_response.hpp"
 #include "golden_section.hpp"
-#include "qz.hpp"
+#include "hinf/certify/balance.hpp"
 #include "hinf/common/error.hpp"
+#include "qz.hpp"
 
 namespace hinf::certify {
 namespace {
@@ -117,10 +118,9 @@ std::vector<double> unit_circle_frequencies(const Eigen::MatrixXd& A, const Eige
 // infinite: exit 3).
 Eigen::VectorXcd stable_poles(const Eigen::MatrixXd& A) {
   if (A.rows() == 0) return Eigen::VectorXcd(0);
-  Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-  if (es.info() != Eigen::Success)
-    throw Error(ErrorCode::NumericalFailure, "discrete_hinf_norm: eigenvalues of A did not converge");
-  const Eigen::VectorXcd poles = es.eigenvalues();
+  // balanced, as every spectral radius of the project (docs/maths.md §4.4): the same ρ as
+  // certify::spectral_radius, so a caller that checked ρ < 1 first is never contradicted
+  const Eigen::VectorXcd poles = balanced_eigenvalues(A);
   const double rho = poles.cwiseAbs().maxCoeff();
   if (!(rho < 1.0)) {
     std::ostringstream msg;

@@ -7,7 +7,12 @@
 #include <IpoptConfig.h>
 
 #include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
+#include <string>
 
 namespace hinf::sdp {
 
@@ -193,10 +198,48 @@ class CenteringTnlp : public Ipopt::TNLP {
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// Ipopt reports any failure of MUMPS as Error_In_Step_Computation; only its linear-algebra
+// journal, at level J_ERROR, says which (MUMPS's INFO(1)). This journal keeps what those
+// messages say, so that MUMPS running out of memory — INFO(1) = -13 (a Fortran ALLOCATE
+// failed) or -19 (over its memory cap), or -8/-9 still after Ipopt's reallocations ("not
+// able to obtain enough memory") — is told from a numerical failure.
+class MumpsErrorJournal : public Ipopt::Journal {
+ public:
+  MumpsErrorJournal() : Ipopt::Journal("hinf-mumps-errors", Ipopt::J_NONE) {
+    SetPrintLevel(Ipopt::J_LINEAR_ALGEBRA, Ipopt::J_ERROR);
+  }
+  void reset() { out_of_memory_ = false; }
+  bool out_of_memory() const { return out_of_memory_; }
+
+ protected:
+  void PrintImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char* str) override { note(str); }
+  void PrintfImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char* format, va_list ap) override {
+    char line[kMessageChars];
+    std::vsnprintf(line, sizeof line, format, ap);
+    note(line);
+  }
+  void FlushBufferImpl() override {}
+
+ private:
+  static constexpr int kMessageChars = 512;
+  void note(const std::string& message) {
+    if (message.find("not able to obtain enough memory") != std::string::npos) out_of_memory_ = true;
+    for (const char* key : {"INFO(1) =", "Error="}) {
+      const size_t at = message.find(key);
+      if (at == std::string::npos) continue;
+      const int info1 = std::atoi(message.c_str() + at + std::strlen(key));
+      if (info1 == kMumpsAllocateFailed || info1 == kMumpsOverMemoryCap) out_of_memory_ = true;
+    }
+  }
+  static constexpr int kMumpsAllocateFailed = -13, kMumpsOverMemoryCap = -19;
+  bool out_of_memory_ = false;
+};
+
 }  // namespace
 
 struct IpoptCentering::Impl {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
+  Ipopt::SmartPtr<MumpsErrorJournal> mumps_errors = new MumpsErrorJournal;
 };
 
 IpoptCentering::IpoptCentering() : impl_(new Impl) {
@@ -218,6 +261,7 @@ IpoptCentering::IpoptCentering() : impl_(new Impl) {
   o.SetIntegerValue("mumps_permuting_scaling", 0);
   o.SetIntegerValue("mumps_scaling", 0);
   impl_->app->Initialize("");  // never read an ipopt.opt from the working directory
+  impl_->app->Jnlst()->AddJournal(Ipopt::GetRawPtr(impl_->mumps_errors));
 }
 
 IpoptCentering::~IpoptCentering() { delete impl_; }
@@ -238,6 +282,7 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
     o.SetIntegerValue("print_level", 4);
   }
   Ipopt::SmartPtr<CenteringTnlp> tnlp = new CenteringTnlp(barrier, z0, opt);
+  impl_->mumps_errors->reset();
   const Ipopt::ApplicationReturnStatus st = impl_->app->OptimizeTNLP(Ipopt::GetRawPtr(tnlp));
   if (opt.derivative_test) {
     o.SetStringValue("derivative_test", "none");
@@ -262,7 +307,10 @@ CenteringResult IpoptCentering::run(LogDetBarrier& barrier, const Eigen::VectorX
     case Ipopt::Maximum_CpuTime_Exceeded: r.status = "maximum_cpu_time"; break;
     case Ipopt::Search_Direction_Becomes_Too_Small: r.status = "search_direction_too_small"; break;
     case Ipopt::Restoration_Failed: r.status = "restoration_failed"; break;
-    case Ipopt::Error_In_Step_Computation: r.status = "error_in_step_computation"; break;
+    case Ipopt::Error_In_Step_Computation:
+      r.out_of_memory = impl_->mumps_errors->out_of_memory();
+      r.status = r.out_of_memory ? "mumps_out_of_memory" : "error_in_step_computation";
+      break;
     case Ipopt::Invalid_Number_Detected: r.status = "invalid_number"; break;
     case Ipopt::Insufficient_Memory: r.status = "insufficient_memory"; r.out_of_memory = true; break;
     default: r.status = "ipopt_status_" + std::to_string(static_cast<int>(st)); break;

@@ -313,6 +313,11 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
     if (observer_)
       observer_({static_cast<int>(phase), k, s_.t, obj, gap, r.iterations, r.lambda2, seconds_since(start_)});
     if (!minimise && (r.stopped_early || obj < 0)) return true;
+    if (!r.centred && !r.stopped_early && r.out_of_memory) {  // shorter steps would not need less memory
+      sol_.status = Status::OutOfMemory;
+      sol_.detail = "in phase " + std::to_string(static_cast<int>(phase)) + " at t = " + std::to_string(s_.t);
+      return false;
+    }
     if (!r.centred && !r.stopped_early) {
       switch (recover(b, phase)) {
         case Recovery::Retry:
@@ -326,11 +331,6 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
           return true;
         case Recovery::Fail:
           if (out_of_budget()) return false;
-          if (r.out_of_memory) {
-            sol_.status = Status::OutOfMemory;
-            sol_.detail = "in phase " + std::to_string(static_cast<int>(phase)) + " at t = " + std::to_string(s_.t);
-            return false;
-          }
           sol_.status = Status::NumericalError;
           sol_.detail = "centring failed in phase " + std::to_string(static_cast<int>(phase)) + " at t = " +
                         std::to_string(s_.t) + " (" +

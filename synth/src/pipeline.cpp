@@ -42,6 +42,10 @@ double estimated_solve_mib(const lmi::LmiProblem& lmi) {
   return sdp::estimated_peak_bytes(lmi.order(), lmi.num_params() + 2) / (1 << 20);
 }
 
+sdp::TimeEstimate estimated_solve_time(const lmi::LmiProblem& lmi) {
+  return sdp::estimated_solve_time(lmi.hessian_multiply_adds(), lmi.num_params() + 2);
+}
+
 void require_memory(const lmi::LmiProblem& lmi, const Settings& settings, const char* what) {
   const double mib = estimated_solve_mib(lmi);
   if (mib <= settings.max_memory_mb) return;

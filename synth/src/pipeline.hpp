@@ -8,6 +8,7 @@
 #include "hinf/lmi/lmi_problem.hpp"
 #include "hinf/models/plant.hpp"
 #include "hinf/sdp/path_following.hpp"
+#include "hinf/sdp/time_model.hpp"
 #include "hinf/synth/plant_scaling.hpp"
 #include "hinf/synth/synthesis.hpp"
 
@@ -22,6 +23,8 @@ sdp::Options solver_options(const Settings& settings);
 // The solver's memory model (sdp/memory_model.hpp) for this LMI, MiB: p variables plus
 // the two of phase I.
 double estimated_solve_mib(const lmi::LmiProblem& lmi);
+// The solver's time model (sdp/time_model.hpp) for this LMI (p variables plus phase I's two).
+sdp::TimeEstimate estimated_solve_time(const lmi::LmiProblem& lmi);
 
 // Refuses (Error(InvalidInput) naming max_memory_mb), before anything of its size is
 // allocated, an SDP whose solve the solver's memory model puts above solver.max_memory_mb.

@@ -262,6 +262,10 @@ ProblemSize problem_size(const Plant& user_plant, const Settings& settings) {
   size.lmi_order = lmi.order();
   size.variables = lmi.num_params();
   size.memory_mib = estimated_solve_mib(lmi);
+  const sdp::TimeEstimate time = estimated_solve_time(lmi);
+  size.newton_iteration_s = time.newton_iteration_s;
+  size.fewest_s = time.fewest_s;
+  size.most_s = time.most_s;
   return size;
 }
 

@@ -93,3 +93,22 @@ TEST(LmiLayer, CostOfScalarVariable) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------- Hessian work count
+// hessian_multiply_adds() counted by hand for one term: the four products Q₁, P₁, Q₂, P₂,
+// the block's update 2·a·b·a·b, the contraction 3·raw² (docs: lmi_problem.hpp).
+TEST(LmiLayer, HessianMultiplyAddsCountedByHand) {
+  {  // X (2×2) with identity factors: each product is a 2×2 copy
+    LmiProblem L({2});
+    const auto X = L.add_symmetric("X", 2);
+    L.add_term(0, 0, X, MatrixXd::Identity(2, 2), MatrixXd::Identity(2, 2));
+    EXPECT_EQ(L.hessian_multiply_adds(), 4 * 4 + 2 * 16 + 3 * 16);
+  }
+  {  // left 3×2, right 2×3 (neither a scaled identity): each product (2×3)(3×3)(3×2) costs 18 + 12
+    std::mt19937 g(3);
+    LmiProblem L({3});
+    const auto X = L.add_full("X", 2, 2);
+    L.add_term(0, 0, X, random_matrix(g, 3, 2), random_matrix(g, 2, 3), false, true);
+    EXPECT_EQ(L.hessian_multiply_adds(), 4 * 30 + 2 * 16 + 3 * 16);
+  }
+}

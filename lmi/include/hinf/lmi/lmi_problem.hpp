@@ -81,6 +81,10 @@ class LmiProblem {
   // true the assembly stops and false is returned, Hs left unspecified.
   bool hessian(const Eigen::MatrixXd& W, Eigen::MatrixXd& Hs,
                const std::function<bool()>& interrupted = nullptr) const;
+  // Multiply-adds of one hessian() call, counted from the terms' shapes (the products Q₁,
+  // P₁, Q₂, P₂ of every pair of terms, the fused update of their block, the contraction to
+  // the parameters): the work the solver's time model (sdp/time_model.hpp) is built on.
+  double hessian_multiply_adds() const;
   // The scaled Jacobian of the barrier for any T with TᵀT = W (the inverse Cholesky factor
   // of the slack, or Λ^{-1/2}Qᵀ from its eigendecomposition): column i = svec(T Mᵢ Tᵀ),
   // svec the lower triangle column by column with off-diagonal entries ×√2, so that GᵀG
@@ -122,6 +126,9 @@ class LmiProblem {
   void push_term(int var, int r, int c, double w, const Eigen::MatrixXd& L, const Eigen::MatrixXd& R);
   void check_block(int r, int c, int rows, int cols, const char* what) const;
   void contract_raw(const Eigen::MatrixXd& Hraw, Eigen::MatrixXd& Hs) const;
+  // Multiply-adds of product(left, ·, Y, right, ·) for an m×s₁ op(left), s₁×s₂ Y and s₂×n op(right).
+  static double product_multiply_adds(const Factor& left, const Factor& right, double m, double s1, double s2,
+                                      double n);
   // out = op(left) · Y · op(right), op = transpose when the flag is set.
   static void product(const Factor& left, bool tl, const Eigen::Ref<const Eigen::MatrixXd>& Y,
                       const Factor& right, bool tr, Eigen::MatrixXd& out);

@@ -88,12 +88,15 @@ struct SynthesisResult {
 std::string bound_statement(FilterForm form, bool uncertain, Estimate estimate = Estimate::Predicted);
 
 // The SDP `synthesize` would solve, known before it runs (for -v and the memory guard):
-// its form, the LMI's order N and variables, and the solver's memory model's estimate.
+// its form, the LMI's order N and variables, and the solver's memory and time models' estimates.
 struct ProblemSize {
   FilterForm form = FilterForm::Augmented;
   int lmi_order = 0;
   int variables = 0;
   double memory_mib = 0;  // sdp::estimated_peak_bytes, MiB
+  // The solver's time model (sdp::estimated_solve_time): one Newton iteration, and the
+  // solve at the fewest and most Newton iterations measured.
+  double newton_iteration_s = 0, fewest_s = 0, most_s = 0;
 };
 ProblemSize problem_size(const Plant& plant, const Settings& settings);
 
