@@ -89,7 +89,8 @@ void add_analyze(CLI::App& app, Action& action) {
                 << (cfg.sample_time() ? " = " + num(peak_hz(a, *cfg.sample_time())) + " Hz (T = " + num(*cfg.sample_time()) + " s)" : "")
                 << "\n"
                 << "sampled spectral radius    " << num(a.spectral_radius_sampled_max) << " (max over admissible F)\n"
-                << "robust bound (LMI)         " << num(a.robust_bound) << "\n";
+                << "robust bound (LMI)         " << num(a.robust_bound)
+                << (cfg.plant.uncertain() ? "" : " (no uncertainty: the nominal norm, LMI (50)'s infimum)") << "\n";
       if (a.has_worst_F)
         std::cout << "worst case found           " << num(a.worst_F_gain) << " at a constant admissible F ("
                   << a.worst_F_evaluations << " norms; sampled, then a local search): the worst-case gain lies in ["

@@ -117,11 +117,26 @@ double solve_analysis(const Plant& user_plant, const Filter& user, const Setting
   return sol.objective / (sc.gamma_factor() * sc.gamma_factor());
 }
 
+// Without uncertainty the analysis LMI (50) is the bounded-real lemma, whose infimum over γ
+// is the error system's H∞ norm: the symplectic pencil gives it, certified to
+// kNominalBoundTolerance, with no SDP — whose optimum is then an unattained point of the
+// boundary, where the barrier method can fail on round-off (a nilpotent plant's did).
+constexpr double kNominalBoundTolerance = 1e-10;
+double nominal_bound(const Plant& plant, const Filter& filter) {
+  const StateSpace es = certify::error_system(plant, filter);
+  const double rho = certify::spectral_radius(es.A);
+  if (!(rho < 1))
+    throw Error(ErrorCode::Infeasible, "the error system is not Schur stable (spectral radius " + fmt(rho) +
+                                           "): no finite bound (docs/maths.md (50))");
+  return certify::discrete_hinf_norm(es, kNominalBoundTolerance).norm;
+}
+
 }  // namespace
 
 double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings) {
   validate_plant(plant);
   settings.validate();
+  if (!plant.uncertain()) return nominal_bound(plant, filter);
   return std::sqrt(solve_analysis(plant, filter, settings));
 }
 

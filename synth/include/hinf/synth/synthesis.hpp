@@ -149,7 +149,9 @@ std::string theorem1_sdpa(const Plant& plant, const std::string& comment);
 std::string synthesis_sdpa(const Plant& plant, const Settings& settings, const std::string& comment);
 
 // Robust analysis (docs/maths.md (50) and §7.5: Lemma 1 with the S-procedure):
-// the smallest γ for which the analysis LMI is feasible for this filter.
+// the smallest γ for which the analysis LMI is feasible for this filter (without
+// uncertainty: the error system's H∞ norm, by the symplectic pencil). Error(Infeasible)
+// when there is no such γ.
 double robust_bound(const Plant& plant, const Filter& filter, const Settings& settings);
 
 }  // namespace hinf::synth
