@@ -30,4 +30,14 @@ HinfNorm discrete_hinf_norm(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
                             double rel_tol = 1e-10);
 HinfNorm discrete_hinf_norm(const StateSpace& system, double rel_tol = 1e-10);
 
+// ‖G‖∞ of a continuous-time system G(s) = C (sI − A)⁻¹ B + D, by the bilinear map
+// s = α (z − 1)/(z + 1), which takes the imaginary axis onto the unit circle and keeps
+// the norm (docs/maths.md (152)):
+//   A_d = (αI − A)⁻¹(αI + A),  B_d = √(2α)(αI − A)⁻¹B,  C_d = √(2α) C (αI − A)⁻¹,
+//   D_d = D + C (αI − A)⁻¹B,
+// then discrete_hinf_norm; α is the geometric mean of the smallest and largest pole
+// moduli (1 without poles). peak_frequency is in rad/s, ω = α tan(θ/2). Error(Infeasible)
+// naming the spectral abscissa if A is not Hurwitz; otherwise as discrete_hinf_norm.
+HinfNorm continuous_hinf_norm(const StateSpace& system, double rel_tol = 1e-10);
+
 }  // namespace hinf::certify

@@ -1,0 +1,50 @@
+// Output-feedback H∞ controller synthesis (docs/maths.md §26): the LMI of Scherer–Gahinet–
+// Chilali in the change of variables (R, S, Â, B̂, Ĉ, D̂), solved by the same barrier
+// method as the filters, the controller recovered by (151), and an independent
+// certificate computed from the controller alone.
+#pragma once
+#include <complex>
+#include <vector>
+
+#include "hinf/models/controller.hpp"
+#include "hinf/models/generalised_plant.hpp"
+#include "hinf/synth/settings.hpp"
+
+namespace hinf::synth {
+
+struct ControllerCertificate {
+  // Closed loop (147) from the recovered controller: Hurwitz (continuous) or Schur
+  // (discrete), and its spectral abscissa (max Re λ) or spectral radius.
+  bool stable = false;
+  double stability_margin_value = 0;
+  std::vector<std::complex<double>> closed_loop_poles;
+  // ‖T_zw‖∞ of the closed loop, certified upper value (symplectic pencil; continuous time
+  // through the bilinear map (152)), and where it peaks (rad/s or rad/sample).
+  double closed_loop_hinf_norm = 0;
+  double peak_frequency = 0;
+  // The synthesis LMI at the solver's point: its largest eigenvalue (< 0 strictly).
+  double lmi_max_eigenvalue = 0;
+  // cond(N), N Mᵀ = I − R S (the recovery's conditioning, (151)).
+  double cond_N = 0;
+  bool passed = false;  // stable, norm ≤ γ(1 + kNormSlack), LMI strictly negative
+};
+
+struct ControllerSynthesisResult {
+  hinf::Controller controller;
+  double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ
+  ControllerCertificate certificate;
+  int newton_iterations = 0;
+  double time_s = 0;
+};
+
+// Minimises γ over the LMI (149) (continuous) or (150) (discrete); D_K = 0 when
+// strictly_proper. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
+// Error(Infeasible) if the LMI has no solution, Error(NumericalFailure) if the solver or
+// the certificate fails (nothing is returned that the certificate has not passed).
+ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& plant, const Settings& settings,
+                                                bool strictly_proper);
+
+// The certificate of a given controller at level γ (used by synthesize_controller).
+ControllerCertificate certify_controller(const hinf::GeneralisedPlant& plant, const hinf::Controller& K, double gamma);
+
+}  // namespace hinf::synth

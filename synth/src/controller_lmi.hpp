@@ -1,0 +1,35 @@
+// The output-feedback H∞ synthesis LMIs of docs/maths.md §26 (Scherer–Gahinet–Chilali's
+// linearising change of variables) written once, block by block, as data for the generic
+// LMI layer, and the controller's recovery from their solution.
+#pragma once
+#include <optional>
+
+#include "hinf/lmi/lmi_problem.hpp"
+#include "hinf/models/controller.hpp"
+#include "hinf/models/generalised_plant.hpp"
+
+namespace hinf::synth {
+
+struct ControllerLmi {
+  lmi::LmiProblem lmi{std::vector<int>{}};
+  lmi::VarId R, S, Ahat, Bhat, Chat, g;  // g = γ (enters linearly)
+  std::optional<lmi::VarId> Dhat;        // absent for a strictly proper controller (D_K = 0)
+};
+
+// Continuous time (149): blocks n, n, nw, nz of the bounded-real LMI and n, n of
+// [S I; I R] ≻ 0. Discrete time (150): blocks n, n, n, n, nw, nz. Minimise g.
+ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, bool strictly_proper);
+
+// The change of variables' values at a solution x of the LMI.
+struct ControllerPoint {
+  Eigen::MatrixXd R, S, Ahat, Bhat, Chat, Dhat;
+  double gamma = 0;
+};
+ControllerPoint controller_point(const ControllerLmi& C, const hinf::GeneralisedPlant& P, const Eigen::VectorXd& x);
+
+// Recovery (151): N Mᵀ = I − R S split by its SVD U Σ Vᵀ as N = U Σ^½, M = V Σ^½,
+// then D_K, C_K, B_K, A_K. cond(N) (= cond(I − R S)^½) is returned in *cond_N.
+// Throws Error(NumericalFailure) if I − R S is numerically singular.
+hinf::Controller recover_controller(const ControllerPoint& pt, const hinf::GeneralisedPlant& P, double* cond_N);
+
+}  // namespace hinf::synth
