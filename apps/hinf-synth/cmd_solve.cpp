@@ -8,9 +8,30 @@
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/sdp/time_model.hpp"
+#include "hinf/synth/controller_config.hpp"
+#include "hinf/synth/controller_output.hpp"
 #include "hinf/synth/gains_output.hpp"
 
 namespace hinf::cli {
+
+namespace {
+
+// `solve` of a `controller:` config (docs/maths.md §26): the controller file.
+int solve_controller(const synth::ControllerConfig& cfg, const std::string& output) {
+  const synth::ControllerSynthesisResult r = synth::synthesize_controller(cfg.plant, cfg.settings, cfg.strictly_proper);
+  const std::optional<double> period =
+      cfg.plant.time == TimeDomain::Discrete ? std::optional<double>(cfg.plant.sample_time) : std::nullopt;
+  hinf::write_file_atomic(output, synth::format_controller_yaml(r, cfg.plant, cfg.strictly_proper, {cfg.path, cfg.sha256, period}),
+                          {cfg.path});
+  std::cout << "gamma = " << num(r.gamma) << " (closed-loop Hinf norm " << num(r.certificate.closed_loop_hinf_norm)
+            << "), certified; " << (cfg.strictly_proper ? "strictly proper " : "") << to_string(cfg.plant.time)
+            << "-time controller written to " << output << " [" << r.newton_iterations << " Newton iterations, "
+            << num(r.time_s) << " s]\n"
+            << "cond(N) = " << num(r.certificate.cond_N) << "; gamma bounds the gain from w to z of the closed loop\n";
+  return 0;
+}
+
+}  // namespace
 
 void add_solve(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("solve", "synthesise a certified robust H-infinity filter (Theorem 1, or the observer form for plants that are not Schur stable)");
@@ -22,7 +43,9 @@ void add_solve(CLI::App& app, Action& action) {
   cmd->add_flag("-v,--verbose", *verbose, "coefficient ranges and the solver's iteration table on stderr");
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      synth::SynthConfig cfg = synth::load_config(*config);
+      const std::string bytes = synth::read_config_bytes(*config);
+      if (synth::declares_controller(bytes)) return solve_controller(synth::parse_controller_config(bytes, *config), *output);
+      synth::SynthConfig cfg = synth::parse_config(bytes, *config);
       const bool v = *verbose || cfg.settings.verbose;
       std::optional<VerboseLog> log;
       if (v) {

@@ -85,6 +85,8 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(C.lmi.evaluate(sol.x), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
   r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
   r.newton_iterations = sol.newton_total;
+  r.lmi_order = C.lmi.order();
+  r.variables = C.lmi.num_params();
   r.time_s = sol.elapsed_s;
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,

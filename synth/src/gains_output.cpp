@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "hinf/sdp/path_following.hpp"
+#include "yaml_emit.hpp"
 
 #include <Eigen/Core>
 
@@ -16,21 +17,6 @@ namespace hinf::synth {
 const char* tool_version() { return HINF_VERSION; }
 
 namespace {
-
-void emit_matrix(YAML::Emitter& out, const char* key, const Eigen::MatrixXd& M) {
-  out << YAML::Key << key << YAML::Value << YAML::BeginSeq;
-  for (int i = 0; i < M.rows(); ++i) {
-    out << YAML::Flow << YAML::BeginSeq;
-    for (int j = 0; j < M.cols(); ++j) out << M(i, j);
-    out << YAML::EndSeq;
-  }
-  out << YAML::EndSeq;
-}
-
-template <class T>
-void kv(YAML::Emitter& out, const char* key, const T& v) {
-  out << YAML::Key << key << YAML::Value << v;
-}
 
 // The certificate, check by check (docs/maths.md §7), then the recovery's conditioning.
 void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form) {
@@ -68,11 +54,6 @@ void emit_certificate(YAML::Emitter& out, const Certificate& c, FilterForm form)
   kv(out, "norm_B_F", c.norm_B_F);
   kv(out, "norm_C_F", c.norm_C_F);
   out << YAML::EndMap;
-}
-
-std::string eigen_version() {
-  return std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
-         std::to_string(EIGEN_MINOR_VERSION);
 }
 
 // How the solver ran and with what it was built; the timing last (the only bytes that

@@ -2,13 +2,16 @@
 #include "hinf/common/error.hpp"
 #include "hinf/common/input_file.hpp"
 #include "hinf/synth/config.hpp"
+#include "hinf/synth/controller_config.hpp"
 
 namespace hinf::synth {
 
-SynthConfig load_config(const std::string& path) {
+std::string read_config_bytes(const std::string& path) {
   const std::string bytes = read_input_file(path, "config", kMaxConfigBytes);
   if (bytes.empty()) throw Error(ErrorCode::InvalidInput, path + ": empty config file (0 bytes)");
-  return parse_config(bytes, path);
+  return bytes;
 }
+
+SynthConfig load_config(const std::string& path) { return parse_config(read_config_bytes(path), path); }
 
 }  // namespace hinf::synth

@@ -34,6 +34,7 @@ struct ControllerSynthesisResult {
   double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ
   ControllerCertificate certificate;
   int newton_iterations = 0;
+  int lmi_order = 0, variables = 0;
   double time_s = 0;
 };
 
