@@ -18,13 +18,13 @@ namespace {
 
 // `solve` of a `controller:` config (docs/maths.md §26): the controller file.
 int solve_controller(const synth::ControllerConfig& cfg, const std::string& output) {
-  const synth::ControllerSynthesisResult r = synth::synthesize_controller(cfg.plant, cfg.settings, cfg.strictly_proper);
+  const synth::ControllerSynthesisResult r = synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
   const std::optional<double> period =
       cfg.plant.time == TimeDomain::Discrete ? std::optional<double>(cfg.plant.sample_time) : std::nullopt;
-  hinf::write_file_atomic(output, synth::format_controller_yaml(r, cfg.plant, cfg.strictly_proper, {cfg.path, cfg.sha256, period}),
+  hinf::write_file_atomic(output, synth::format_controller_yaml(r, cfg.plant, cfg.design, {cfg.path, cfg.sha256, period}),
                           {cfg.path});
   std::cout << "gamma = " << num(r.gamma) << " (closed-loop Hinf norm " << num(r.certificate.closed_loop_hinf_norm)
-            << "), certified; " << (cfg.strictly_proper ? "strictly proper " : "") << to_string(cfg.plant.time)
+            << "), certified; " << (cfg.design.strictly_proper ? "strictly proper " : "") << to_string(cfg.plant.time)
             << "-time controller written to " << output << " [" << r.newton_iterations << " Newton iterations, "
             << num(r.time_s) << " s]\n"
             << "cond(N) = " << num(r.certificate.cond_N) << "; gamma bounds the gain from w to z of the closed loop\n";

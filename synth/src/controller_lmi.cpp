@@ -85,22 +85,49 @@ void discrete_blocks(const hinf::GeneralisedPlant& P, ControllerLmi& C) {
   }
 }
 
+// The disk |λ| < r (Chilali & Gahinet 1996), docs/maths.md (153), in the same variables:
+//   [ −r X   Y   ]
+//   [  Yᵀ   −r X ]  ≺ 0,   X = [S I; I R],  Y = [AS + B2Ĉ, A + B2D̂C2; Â, RA + B̂C2],
+// on the four n-blocks from `first`.
+void pole_disk_blocks(const hinf::GeneralisedPlant& P, double r, int first, ControllerLmi& C) {
+  auto& M = C.lmi;
+  const int n = P.n();
+  const MatrixXd In = MatrixXd::Identity(n, n);
+  for (int b : {first, first + 2}) {
+    M.add_term(b, b, C.S, -r * In, In);
+    M.add_constant(b, b + 1, -r * In);
+    M.add_term(b + 1, b + 1, C.R, -r * In, In);
+  }
+  M.add_term(first, first + 2, C.S, P.A, In);
+  M.add_term(first, first + 2, C.Chat, P.B2, In);
+  M.add_constant(first, first + 3, P.A);
+  M.add_term(first + 1, first + 2, C.Ahat, In, In);
+  M.add_term(first + 1, first + 3, C.R, In, P.A);
+  M.add_term(first + 1, first + 3, C.Bhat, In, P.C2);
+  if (C.Dhat) M.add_term(first, first + 3, *C.Dhat, P.B2, P.C2);
+}
+
 }  // namespace
 
-ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, bool strictly_proper) {
+ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design) {
   const int n = P.n();
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
+  std::vector<int> blocks = discrete ? std::vector<int>{n, n, n, n, P.nw(), P.nz()}
+                                     : std::vector<int>{n, n, P.nw(), P.nz(), n, n};
+  const int disk_first = static_cast<int>(blocks.size());
+  if (design.pole_disk_radius) blocks.insert(blocks.end(), {n, n, n, n});
   ControllerLmi C;
-  C.lmi = discrete ? lmi::LmiProblem({n, n, n, n, P.nw(), P.nz()}) : lmi::LmiProblem({n, n, P.nw(), P.nz(), n, n});
+  C.lmi = lmi::LmiProblem(blocks);
   C.R = C.lmi.add_symmetric("R", n);
   C.S = C.lmi.add_symmetric("S", n);
   C.Ahat = C.lmi.add_full("A_hat", n, n);
   C.Bhat = C.lmi.add_full("B_hat", n, P.ny());
   C.Chat = C.lmi.add_full("C_hat", P.nu(), n);
-  if (!strictly_proper) C.Dhat = C.lmi.add_full("D_hat", P.nu(), P.ny());
+  if (!design.strictly_proper) C.Dhat = C.lmi.add_full("D_hat", P.nu(), P.ny());
   C.g = C.lmi.add_scalar("gamma");
   if (discrete) discrete_blocks(P, C);
   else continuous_blocks(P, C);
+  if (design.pole_disk_radius) pole_disk_blocks(P, *design.pole_disk_radius, disk_first, C);
   return C;
 }
 

@@ -7,6 +7,7 @@
 #include "hinf/lmi/lmi_problem.hpp"
 #include "hinf/models/controller.hpp"
 #include "hinf/models/generalised_plant.hpp"
+#include "hinf/synth/controller_synthesis.hpp"
 
 namespace hinf::synth {
 
@@ -18,7 +19,8 @@ struct ControllerLmi {
 
 // Continuous time (149): blocks n, n, nw, nz of the bounded-real LMI and n, n of
 // [S I; I R] ≻ 0. Discrete time (150): blocks n, n, n, n, nw, nz. Minimise g.
-ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, bool strictly_proper);
+// With design.pole_disk_radius = r, four more n-blocks hold the disk LMI (153).
+ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design);
 
 // The change of variables' values at a solution x of the LMI.
 struct ControllerPoint {

@@ -12,7 +12,7 @@ namespace hinf::synth {
 
 namespace {
 
-void emit_certificate(YAML::Emitter& out, const ControllerCertificate& c, double gamma, bool discrete) {
+void emit_certificate(YAML::Emitter& out, const ControllerCertificate& c, double gamma, bool discrete, bool disk) {
   out << YAML::Key << "certificate" << YAML::Value << YAML::BeginMap;
   kv(out, "passed", c.passed);
   kv(out, "gamma", gamma);
@@ -20,6 +20,10 @@ void emit_certificate(YAML::Emitter& out, const ControllerCertificate& c, double
   kv(out, discrete ? "closed_loop_spectral_radius" : "closed_loop_spectral_abscissa", c.stability_margin_value);
   kv(out, "closed_loop_hinf_norm", c.closed_loop_hinf_norm);
   kv(out, discrete ? "peak_frequency_rad_per_sample" : "peak_frequency_rad_per_s", c.peak_frequency);
+  if (disk) {
+    kv(out, "max_pole_modulus", c.max_pole_modulus);
+    kv(out, "poles_in_disk", c.poles_in_disk);
+  }
   kv(out, "lmi_max_eigenvalue", c.lmi_max_eigenvalue);
   kv(out, "cond_N", c.cond_N);
   out << YAML::EndMap;
@@ -39,7 +43,7 @@ void emit_poles(YAML::Emitter& out, std::vector<std::complex<double>> poles) {
 }  // namespace
 
 std::string format_controller_yaml(const ControllerSynthesisResult& r, const hinf::GeneralisedPlant& P,
-                                   bool strictly_proper, const GainsProvenance& pv) {
+                                   const ControllerDesign& design, const GainsProvenance& pv) {
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
   YAML::Emitter out;
   out.SetDoublePrecision(17);
@@ -60,14 +64,15 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
   kv(out, "bound", std::string("gamma bounds the ") + (discrete ? "l2" : "L2") +
                        " gain from w to z of the closed loop (the H-infinity norm of T_zw, docs/maths.md (147))");
   out << YAML::Key << "controller" << YAML::Value << YAML::BeginMap;
-  kv(out, "strictly_proper", strictly_proper);
+  kv(out, "strictly_proper", design.strictly_proper);
+  if (design.pole_disk_radius) kv(out, "pole_disk_radius", *design.pole_disk_radius);
   emit_matrix(out, "A_K", r.controller.A_K);
   emit_matrix(out, "B_K", r.controller.B_K);
   emit_matrix(out, "C_K", r.controller.C_K);
   emit_matrix(out, "D_K", r.controller.D_K);
   out << YAML::EndMap;
   emit_poles(out, r.certificate.closed_loop_poles);
-  emit_certificate(out, r.certificate, r.gamma, discrete);
+  emit_certificate(out, r.certificate, r.gamma, discrete, design.pole_disk_radius.has_value());
   out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
   kv(out, "method", "log-barrier interior point, LMI docs/maths.md " + std::string(discrete ? "(150)" : "(149)"));
   kv(out, "ipopt_version", sdp::newton_engine_version());

@@ -1,6 +1,7 @@
 // synthesize_controller, certify_controller (controller_synthesis.hpp).
 #include "hinf/synth/controller_synthesis.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "controller_lmi.hpp"
@@ -43,7 +44,8 @@ void check_dimensions(const hinf::GeneralisedPlant& P) {
 
 }  // namespace
 
-ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const hinf::Controller& K, double gamma) {
+ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const hinf::Controller& K, double gamma,
+                                         const ControllerDesign& design) {
   ControllerCertificate c;
   const hinf::StateSpace cl = hinf::closed_loop(P, K);
   const Eigen::VectorXcd poles = certify::balanced_eigenvalues(cl.A);
@@ -51,6 +53,8 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
   c.stability_margin_value = discrete ? poles.cwiseAbs().maxCoeff() : poles.real().maxCoeff();
   c.stable = discrete ? c.stability_margin_value < 1 : c.stability_margin_value < 0;
+  c.max_pole_modulus = poles.cwiseAbs().maxCoeff();
+  c.poles_in_disk = !design.pole_disk_radius || c.max_pole_modulus < *design.pole_disk_radius;
   if (!c.stable) {
     c.closed_loop_hinf_norm = INFINITY;
     return c;
@@ -59,15 +63,18 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
       discrete ? certify::discrete_hinf_norm(cl, kNormTolerance) : certify::continuous_hinf_norm(cl, kNormTolerance);
   c.closed_loop_hinf_norm = h.norm;
   c.peak_frequency = h.peak_frequency;
-  c.passed = c.closed_loop_hinf_norm <= gamma * (1 + kNormSlack);
+  c.passed = c.poles_in_disk && c.closed_loop_hinf_norm <= gamma * (1 + kNormSlack);
   return c;
 }
 
 ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P, const Settings& settings,
-                                                bool strictly_proper) {
+                                                const ControllerDesign& design) {
   check_dimensions(P);
   settings.validate();
-  const ControllerLmi C = build_controller_lmi(P, strictly_proper);
+  if (design.pole_disk_radius && !(*design.pole_disk_radius > 0 && std::isfinite(*design.pole_disk_radius)))
+    throw Error(ErrorCode::InvalidInput, "controller.pole_disk_radius = " + fmt(*design.pole_disk_radius) +
+                                             ": must be positive and finite", "pole_disk_radius");
+  const ControllerLmi C = build_controller_lmi(P, design);
   require_memory(C.lmi, settings, "the controller LMI");
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings));
   if (sol.status != sdp::Status::Solved)
@@ -79,7 +86,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   double cond_N = 0;
   r.controller = recover_controller(pt, P, &cond_N);
   r.gamma = pt.gamma;
-  r.certificate = certify_controller(P, r.controller, r.gamma);
+  r.certificate = certify_controller(P, r.controller, r.gamma, design);
   r.certificate.cond_N = cond_N;
   r.certificate.lmi_max_eigenvalue =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(C.lmi.evaluate(sol.x), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
@@ -91,6 +98,8 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "controller certificate failed: closed loop " + std::string(r.certificate.stable ? "stable" : "unstable") +
+                    (r.certificate.poles_in_disk ? "" : ", a pole outside the disk (|lambda| = " +
+                                                            fmt(r.certificate.max_pole_modulus) + ")") +
                     ", ‖T_zw‖∞ = " + fmt(r.certificate.closed_loop_hinf_norm) + " against γ = " + fmt(r.gamma) +
                     ", LMI's largest eigenvalue " + fmt(r.certificate.lmi_max_eigenvalue) + ", cond(N) = " + fmt(cond_N));
   return r;

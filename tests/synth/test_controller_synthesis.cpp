@@ -128,10 +128,33 @@ TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
   const GeneralisedPlant P = normalised_plant(A, B1a, B2, C1a, C2);
   const double reference = dgkf_gamma(P);
   for (bool strictly_proper : {true, false}) {
-    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), strictly_proper);
+    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {strictly_proper, std::nullopt});
     EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "strictly proper " << strictly_proper;
     expect_certified(P, r);
   }
+}
+
+// The Chilali–Gahinet disk (docs/maths.md (153)): every closed-loop pole, recomputed from
+// the controller, inside |λ| < r; γ no better than the unconstrained optimum; and the
+// γ-optimal controller's ill-conditioning (a pole near −1e8 rad/s, cond(N) ~ 5e4) gone.
+TEST(ControllerSynthesis, PoleDiskConfinesTheClosedLoop) {
+  MatrixXd A(2, 2), B1a(2, 1), B2(2, 1), C1a(1, 2), C2(1, 2);
+  A << 0, 1, 0, 0;
+  B1a << 0, 1;
+  B2 << 0, 1;
+  C1a << 1, 0;
+  C2 << 1, 0;
+  const GeneralisedPlant P = normalised_plant(A, B1a, B2, C1a, C2);
+  const auto free = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt});
+  for (double r : {2.0, 5.0}) {
+    const auto disk = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, r});
+    const Eigen::VectorXcd poles = hinf::closed_loop(P, disk.controller).A.eigenvalues();
+    EXPECT_LT(poles.cwiseAbs().maxCoeff(), r) << "r = " << r;
+    EXPECT_GE(disk.gamma, dgkf_gamma(P) * (1 - 1e-9)) << "r = " << r;
+    EXPECT_LT(disk.certificate.cond_N, free.certificate.cond_N / 100) << "r = " << r;
+    expect_certified(P, disk);
+  }
+  EXPECT_GT(free.certificate.max_pole_modulus, 1e6);  // what the disk cures
 }
 
 TEST(ControllerSynthesis, RandomPlantsMatchDgkf) {
@@ -142,7 +165,7 @@ TEST(ControllerSynthesis, RandomPlantsMatchDgkf) {
     const GeneralisedPlant P = normalised_plant(A, hinf::test::random_matrix(g, n, 2), hinf::test::random_matrix(g, n, 1),
                                                 hinf::test::random_matrix(g, 2, n), hinf::test::random_matrix(g, 1, n));
     const double reference = dgkf_gamma(P);
-    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), false);
+    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt});
     EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "trial " << trial;
     expect_certified(P, r);
   }
@@ -186,8 +209,8 @@ TEST(ControllerSynthesis, DiscreteFilteringMatchesTheRiccatiFilters) {
     const GeneralisedPlant P = filtering_plant(F);
     const double predicted = hinf::certify::optimal_hinf_predictor_gamma(F, 1e-10, hinf::Estimate::Predicted);
     const double filtered = hinf::certify::optimal_hinf_predictor_gamma(F, 1e-10, hinf::Estimate::Filtered);
-    const auto strictly_proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), true);
-    const auto proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), false);
+    const auto strictly_proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt});
+    const auto proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt});
     EXPECT_NEAR(strictly_proper.gamma / predicted, 1.0, 1e-6) << "trial " << trial;
     EXPECT_NEAR(proper.gamma / filtered, 1.0, 1e-6) << "trial " << trial;
     expect_certified(P, strictly_proper);

@@ -15,10 +15,10 @@ Eigen::MatrixXd plant_matrix(const YamlMap& c, const char* key, Eigen::Index row
   return c.matrix(key, rows, cols);
 }
 
-hinf::GeneralisedPlant read_controller_section(const YamlReader& reader, const YAML::Node& node, bool& strictly_proper) {
+hinf::GeneralisedPlant read_controller_section(const YamlReader& reader, const YAML::Node& node, ControllerDesign& design) {
   const YamlMap c = reader.map(node, "controller",
                                {"time", "sample_time", "A", "B1", "B2", "C1", "C2", "D11", "D12", "D21",
-                                "strictly_proper"});
+                                "strictly_proper", "pole_disk_radius"});
   hinf::GeneralisedPlant P;
   c.required("time", "continuous or discrete");
   P.time = c.choice("time", {"continuous", "discrete"}) == "discrete" ? hinf::TimeDomain::Discrete
@@ -46,7 +46,12 @@ hinf::GeneralisedPlant read_controller_section(const YamlReader& reader, const Y
   P.D12 = plant_matrix(c, "D12", P.C1.rows(), P.B2.cols());
   P.D21 = plant_matrix(c, "D21", P.C2.rows(), P.B1.cols());
   P.D11 = c.has("D11") ? c.matrix("D11", P.C1.rows(), P.B1.cols()) : Eigen::MatrixXd::Zero(P.C1.rows(), P.B1.cols());
-  strictly_proper = c.boolean("strictly_proper", true);
+  design.strictly_proper = c.boolean("strictly_proper", true);
+  if (c.has("pole_disk_radius")) {
+    design.pole_disk_radius = c.positive("pole_disk_radius");
+    if (P.time == hinf::TimeDomain::Discrete && *design.pole_disk_radius > 1)
+      c.fail("pole_disk_radius", "in discrete time the disk |z| < r must lie in the unit disk (r <= 1)");
+  }
   return P;
 }
 
@@ -60,7 +65,7 @@ ControllerConfig parse_controller_config(const std::string& yaml_text, const std
   const YAML::Node root = reader.load(yaml_text, "empty config; expected a map with 'controller'");
   reader.check_map(root, "", {"controller", "solver"});
   try {
-    config.plant = read_controller_section(reader, root["controller"], config.strictly_proper);
+    config.plant = read_controller_section(reader, root["controller"], config.design);
     if (const YAML::Node solver = root["solver"]) {
       config.settings = read_solver_section(reader, solver);
       try {

@@ -7,19 +7,22 @@
 //     A, B1, B2, C1, C2, D12, D21        (required)
 //     D11                                (optional; zero by default)
 //     strictly_proper: true              (default true: D_K = 0)
+//     pole_disk_radius: 2                (optional: closed-loop poles in |λ| < r; rad/s, or
+//                                         a modulus < 1 in discrete time)
 // Every failure is Error(InvalidInput) naming the file, the key path and, for matrices,
 // the expected and actual dimensions.
 #pragma once
 #include <string>
 
 #include "hinf/models/generalised_plant.hpp"
+#include "hinf/synth/controller_synthesis.hpp"
 #include "hinf/synth/settings.hpp"
 
 namespace hinf::synth {
 
 struct ControllerConfig {
   hinf::GeneralisedPlant plant;
-  bool strictly_proper = true;
+  ControllerDesign design;
   Settings settings;
   std::string sha256;  // of the config's exact bytes
   std::string path;

@@ -11,6 +11,6 @@
 namespace hinf::synth {
 
 std::string format_controller_yaml(const ControllerSynthesisResult& result, const hinf::GeneralisedPlant& plant,
-                                   bool strictly_proper, const GainsProvenance& provenance);
+                                   const ControllerDesign& design, const GainsProvenance& provenance);
 
 }  // namespace hinf::synth

@@ -4,6 +4,7 @@
 // certificate computed from the controller alone.
 #pragma once
 #include <complex>
+#include <optional>
 #include <vector>
 
 #include "hinf/models/controller.hpp"
@@ -11,6 +12,15 @@
 #include "hinf/synth/settings.hpp"
 
 namespace hinf::synth {
+
+// What is asked of the controller beside γ (config controller.strictly_proper,
+// controller.pole_disk_radius).
+struct ControllerDesign {
+  bool strictly_proper = true;  // D_K = 0: no measurement noise fed straight to u
+  // Closed-loop poles confined to |λ| < r (Chilali–Gahinet disk, docs/maths.md (153)): the
+  // cure for the γ-optimal controller's ill-conditioning (very fast poles, large cond(N)).
+  std::optional<double> pole_disk_radius;
+};
 
 struct ControllerCertificate {
   // Closed loop (147) from the recovered controller: Hurwitz (continuous) or Schur
@@ -26,7 +36,11 @@ struct ControllerCertificate {
   double lmi_max_eigenvalue = 0;
   // cond(N), N Mᵀ = I − R S (the recovery's conditioning, (151)).
   double cond_N = 0;
-  bool passed = false;  // stable, norm ≤ γ(1 + kNormSlack), LMI strictly negative
+  // The largest pole modulus, and whether every pole is inside the disk asked for (true
+  // when none was).
+  double max_pole_modulus = 0;
+  bool poles_in_disk = true;
+  bool passed = false;  // stable, in the disk, norm ≤ γ(1 + kNormSlack), LMI strictly negative
 };
 
 struct ControllerSynthesisResult {
@@ -38,14 +52,15 @@ struct ControllerSynthesisResult {
   double time_s = 0;
 };
 
-// Minimises γ over the LMI (149) (continuous) or (150) (discrete); D_K = 0 when
-// strictly_proper. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
+// Minimises γ over the LMI (149) (continuous) or (150) (discrete), with the disk (153) if
+// asked; D_K = 0 when strictly proper. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
 // Error(Infeasible) if the LMI has no solution, Error(NumericalFailure) if the solver or
 // the certificate fails (nothing is returned that the certificate has not passed).
 ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& plant, const Settings& settings,
-                                                bool strictly_proper);
+                                                const ControllerDesign& design);
 
 // The certificate of a given controller at level γ (used by synthesize_controller).
-ControllerCertificate certify_controller(const hinf::GeneralisedPlant& plant, const hinf::Controller& K, double gamma);
+ControllerCertificate certify_controller(const hinf::GeneralisedPlant& plant, const hinf::Controller& K, double gamma,
+                                         const ControllerDesign& design);
 
 }  // namespace hinf::synth
