@@ -109,6 +109,18 @@ GeneralisedPlant normalised_plant(const MatrixXd& A, const MatrixXd& B1a, const 
   return P;
 }
 
+// Force disturbance, position measured with noise, z = [position; u]
+// (tests/data/controllers/double-integrator.yaml).
+GeneralisedPlant double_integrator() {
+  MatrixXd A(2, 2), B1a(2, 1), B2(2, 1), C1a(1, 2), C2(1, 2);
+  A << 0, 1, 0, 0;
+  B1a << 0, 1;
+  B2 << 0, 1;
+  C1a << 1, 0;
+  C2 << 1, 0;
+  return normalised_plant(A, B1a, B2, C1a, C2);
+}
+
 void expect_certified(const GeneralisedPlant& P, const hinf::synth::ControllerSynthesisResult& r) {
   // recomputed here from the controller alone
   const hinf::StateSpace cl = hinf::closed_loop(P, r.controller);
@@ -119,13 +131,7 @@ void expect_certified(const GeneralisedPlant& P, const hinf::synth::ControllerSy
 }
 
 TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
-  MatrixXd A(2, 2), B1a(2, 1), B2(2, 1), C1a(1, 2), C2(1, 2);
-  A << 0, 1, 0, 0;
-  B1a << 0, 1;
-  B2 << 0, 1;
-  C1a << 1, 0;
-  C2 << 1, 0;
-  const GeneralisedPlant P = normalised_plant(A, B1a, B2, C1a, C2);
+  const GeneralisedPlant P = double_integrator();
   const double reference = dgkf_gamma(P);
   for (bool strictly_proper : {true, false}) {
     const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {strictly_proper, std::nullopt});
@@ -138,13 +144,7 @@ TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
 // the controller, inside |λ| < r; γ no better than the unconstrained optimum; and the
 // γ-optimal controller's ill-conditioning (a pole near −1e8 rad/s, cond(N) ~ 5e4) gone.
 TEST(ControllerSynthesis, PoleDiskConfinesTheClosedLoop) {
-  MatrixXd A(2, 2), B1a(2, 1), B2(2, 1), C1a(1, 2), C2(1, 2);
-  A << 0, 1, 0, 0;
-  B1a << 0, 1;
-  B2 << 0, 1;
-  C1a << 1, 0;
-  C2 << 1, 0;
-  const GeneralisedPlant P = normalised_plant(A, B1a, B2, C1a, C2);
+  const GeneralisedPlant P = double_integrator();
   const auto free = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt});
   for (double r : {2.0, 5.0}) {
     const auto disk = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, r});
