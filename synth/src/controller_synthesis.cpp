@@ -5,6 +5,7 @@
 #include <string>
 
 #include "controller_lmi.hpp"
+#include "controller_scaling.hpp"
 #include "hinf/certify/balance.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/common/error.hpp"
@@ -74,18 +75,24 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   if (design.pole_disk_radius && !(*design.pole_disk_radius > 0 && std::isfinite(*design.pole_disk_radius)))
     throw Error(ErrorCode::InvalidInput, "controller.pole_disk_radius = " + fmt(*design.pole_disk_radius) +
                                              ": must be positive and finite", "pole_disk_radius");
-  const ControllerLmi C = build_controller_lmi(P, design);
+  // solved on the equilibrated plant (docs/maths.md (154)), mapped back exactly
+  const ControllerScaling sc = choose_controller_scaling(P);
+  const hinf::GeneralisedPlant Ps = scaled_generalised_plant(P, sc);
+  ControllerDesign scaled_design = design;
+  if (design.pole_disk_radius && P.time == hinf::TimeDomain::Continuous)
+    scaled_design.pole_disk_radius = *design.pole_disk_radius / sc.time;
+  const ControllerLmi C = build_controller_lmi(Ps, scaled_design);
   require_memory(C.lmi, settings, "the controller LMI");
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings));
   if (sol.status != sdp::Status::Solved)
     throw Error(error_code_for(sol.status), "controller LMI (docs/maths.md (149)/(150)): " +
                                                 std::string(sdp::status_message(sol.status)) +
                                                 (sol.detail.empty() ? "" : ": " + sol.detail));
-  const ControllerPoint pt = controller_point(C, P, sol.x);
+  const ControllerPoint pt = controller_point(C, Ps, sol.x);
   ControllerSynthesisResult r;
   double cond_N = 0;
-  r.controller = recover_controller(pt, P, &cond_N);
-  r.gamma = pt.gamma;
+  r.controller = unscaled_controller(recover_controller(pt, Ps, &cond_N), sc);
+  r.gamma = pt.gamma * sc.gamma_factor();
   r.certificate = certify_controller(P, r.controller, r.gamma, design);
   r.certificate.cond_N = cond_N;
   r.certificate.lmi_max_eigenvalue =
