@@ -9,6 +9,7 @@
 #include "hinf/certify/balance.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/lmi/sdpa_format.hpp"
 #include "hinf/sdp/path_following.hpp"
 #include "pipeline.hpp"
 
@@ -45,6 +46,38 @@ void check_dimensions(const hinf::GeneralisedPlant& P) {
 
 }  // namespace
 
+namespace {
+
+// The equilibrated plant, the disk in its time unit, and the LMI on them.
+struct ScaledControllerLmi {
+  ControllerScaling scaling;
+  hinf::GeneralisedPlant plant;
+  ControllerLmi lmi;
+};
+ScaledControllerLmi scaled_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design) {
+  ScaledControllerLmi s;
+  s.scaling = choose_controller_scaling(P);
+  s.plant = scaled_generalised_plant(P, s.scaling);
+  ControllerDesign scaled_design = design;
+  if (design.pole_disk_radius && P.time == hinf::TimeDomain::Continuous)
+    scaled_design.pole_disk_radius = *design.pole_disk_radius / s.scaling.time;
+  s.lmi = build_controller_lmi(s.plant, scaled_design);
+  return s;
+}
+
+}  // namespace
+
+std::string controller_sdpa(const hinf::GeneralisedPlant& P, const ControllerDesign& design, const std::string& comment) {
+  check_dimensions(P);
+  const ScaledControllerLmi S = scaled_controller_lmi(P, design);
+  return lmi::to_sdpa_sparse(S.lmi.lmi, S.lmi.lmi.cost_of(S.lmi.g),
+                             "controller LMI (docs/maths.md " +
+                                 std::string(P.time == hinf::TimeDomain::Discrete ? "(150)" : "(149)") + ") " + comment +
+                                 "\nvariable " + std::to_string(S.lmi.lmi.variable(S.lmi.g).offset + 1) +
+                                 " is the scaled gamma; gamma = it times " + fmt(S.scaling.gamma_factor()) +
+                                 " (the equilibration (154))");
+}
+
 ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const hinf::Controller& K, double gamma,
                                          const ControllerDesign& design) {
   ControllerCertificate c;
@@ -76,12 +109,10 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
     throw Error(ErrorCode::InvalidInput, "controller.pole_disk_radius = " + fmt(*design.pole_disk_radius) +
                                              ": must be positive and finite", "pole_disk_radius");
   // solved on the equilibrated plant (docs/maths.md (154)), mapped back exactly
-  const ControllerScaling sc = choose_controller_scaling(P);
-  const hinf::GeneralisedPlant Ps = scaled_generalised_plant(P, sc);
-  ControllerDesign scaled_design = design;
-  if (design.pole_disk_radius && P.time == hinf::TimeDomain::Continuous)
-    scaled_design.pole_disk_radius = *design.pole_disk_radius / sc.time;
-  const ControllerLmi C = build_controller_lmi(Ps, scaled_design);
+  const ScaledControllerLmi S = scaled_controller_lmi(P, design);
+  const ControllerScaling& sc = S.scaling;
+  const hinf::GeneralisedPlant& Ps = S.plant;
+  const ControllerLmi& C = S.lmi;
   require_memory(C.lmi, settings, "the controller LMI");
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings));
   if (sol.status != sdp::Status::Solved)

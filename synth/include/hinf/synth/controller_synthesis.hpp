@@ -5,6 +5,7 @@
 #pragma once
 #include <complex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hinf/models/controller.hpp"
@@ -58,6 +59,11 @@ struct ControllerSynthesisResult {
 // the certificate fails (nothing is returned that the certificate has not passed).
 ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& plant, const Settings& settings,
                                                 const ControllerDesign& design);
+
+// The LMI synthesize_controller minimises (on the equilibrated plant, (154)), in SDPA sparse
+// format; the comment says which variable is γ̃ and the factor s_z/s_w with γ = γ̃ s_z/s_w.
+std::string controller_sdpa(const hinf::GeneralisedPlant& plant, const ControllerDesign& design,
+                            const std::string& comment);
 
 // The certificate of a given controller at level γ (used by synthesize_controller).
 ControllerCertificate certify_controller(const hinf::GeneralisedPlant& plant, const hinf::Controller& K, double gamma,
