@@ -127,7 +127,9 @@ void IterationTable::operator()(const synth::IterationReport& report) {
     last_phase_ = 0;
   }
   if (r.phase == 2 && last_phase_ != 2)
-    log_->line("---- phase 2: minimise %s ----", report.stage == SolveStage::Backoff ? "-margin" : "gamma^2");
+    log_->line("---- phase 2: minimise %s ----", report.stage == SolveStage::Backoff      ? "-margin"
+                                                 : report.stage == SolveStage::Controller ? "gamma (equilibrated plant)"
+                                                                                          : "gamma^2");
   last_phase_ = r.phase;
   last_line_s_ = r.elapsed_s;
   if (r.newton_step)

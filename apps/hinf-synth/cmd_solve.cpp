@@ -17,8 +17,12 @@ namespace hinf::cli {
 namespace {
 
 // `solve` of a `controller:` config (docs/maths.md §26): the controller file.
-int solve_controller(const synth::ControllerConfig& cfg, const std::string& output) {
-  const synth::ControllerSynthesisResult r = synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+int solve_controller(const synth::ControllerConfig& cfg, const std::string& output, bool verbose) {
+  std::optional<VerboseLog> log;
+  if (verbose || cfg.settings.verbose) log.emplace(stderr);
+  const synth::ControllerSynthesisResult r =
+      log ? synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design, IterationTable(*log))
+          : synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
   const std::optional<double> period =
       cfg.plant.time == TimeDomain::Discrete ? std::optional<double>(cfg.plant.sample_time) : std::nullopt;
   hinf::write_file_atomic(output, synth::format_controller_yaml(r, cfg.plant, cfg.design, {cfg.path, cfg.sha256, period}),
@@ -44,7 +48,7 @@ void add_solve(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const std::string bytes = synth::read_config_bytes(*config);
-      if (synth::declares_controller(bytes)) return solve_controller(synth::parse_controller_config(bytes, *config), *output);
+      if (synth::declares_controller(bytes)) return solve_controller(synth::parse_controller_config(bytes, *config), *output, *verbose);
       synth::SynthConfig cfg = synth::parse_config(bytes, *config);
       const bool v = *verbose || cfg.settings.verbose;
       std::optional<VerboseLog> log;

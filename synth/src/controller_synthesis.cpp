@@ -102,7 +102,7 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
 }
 
 ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P, const Settings& settings,
-                                                const ControllerDesign& design) {
+                                                const ControllerDesign& design, const IterationObserver& observer) {
   check_dimensions(P);
   settings.validate();
   if (design.pole_disk_radius && !(*design.pole_disk_radius > 0 && std::isfinite(*design.pole_disk_radius)))
@@ -114,7 +114,8 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   const hinf::GeneralisedPlant& Ps = S.plant;
   const ControllerLmi& C = S.lmi;
   require_memory(C.lmi, settings, "the controller LMI");
-  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings));
+  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings), Eigen::VectorXd(),
+                                                 staged(observer, SolveStage::Controller));
   if (sol.status != sdp::Status::Solved)
     throw Error(error_code_for(sol.status), "controller LMI (docs/maths.md (149)/(150)): " +
                                                 std::string(sdp::status_message(sol.status)) +

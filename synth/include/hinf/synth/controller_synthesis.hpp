@@ -11,6 +11,7 @@
 #include "hinf/models/controller.hpp"
 #include "hinf/models/generalised_plant.hpp"
 #include "hinf/synth/settings.hpp"
+#include "hinf/synth/synthesis.hpp"
 
 namespace hinf::synth {
 
@@ -57,8 +58,10 @@ struct ControllerSynthesisResult {
 // asked; D_K = 0 when strictly proper. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
 // Error(Infeasible) if the LMI has no solution, Error(NumericalFailure) if the solver or
 // the certificate fails (nothing is returned that the certificate has not passed).
+// `observer` (may be empty) hears the solver's progress, as synthesize's does.
 ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& plant, const Settings& settings,
-                                                const ControllerDesign& design);
+                                                const ControllerDesign& design,
+                                                const IterationObserver& observer = nullptr);
 
 // The LMI synthesize_controller minimises (on the equilibrated plant, (154)), in SDPA sparse
 // format; the comment says which variable is γ̃ and the factor s_z/s_w with γ = γ̃ s_z/s_w.

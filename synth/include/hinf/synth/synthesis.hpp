@@ -108,7 +108,9 @@ SynthesisResult synthesize(const Plant& plant, const Settings& settings);
 // Progress of the interior-point solver, for an iteration table (`--verbose`): which SDP
 // an iteration belongs to — Theorem 1 itself, or the optional γ back-off (largest LMI
 // margin at (1+b)γ*) — and the solver's own progress record.
-enum class SolveStage { Synthesis, Backoff };
+// Synthesis: a filter's LMI (min γ²); Backoff: its γ back-off; Controller: a controller's
+// LMI (docs/maths.md §26: min γ of the equilibrated plant).
+enum class SolveStage { Synthesis, Backoff, Controller };
 
 struct IterationReport {
   SolveStage stage = SolveStage::Synthesis;
