@@ -1,6 +1,7 @@
 // synthesize_controller, certify_controller (controller_synthesis.hpp).
 #include "hinf/synth/controller_synthesis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -130,6 +131,9 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   r.certificate.lmi_max_eigenvalue =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(C.lmi.evaluate(sol.x), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
   r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
+  // What is certified is the closed loop's norm (its certified upper value): γ is never
+  // written below it, even within the recovery's slack kNormSlack.
+  if (r.certificate.passed) r.gamma = std::max(r.gamma, r.certificate.closed_loop_hinf_norm);
   r.newton_iterations = sol.newton_total;
   r.lmi_order = C.lmi.order();
   r.variables = C.lmi.num_params();

@@ -47,7 +47,7 @@ struct ControllerCertificate {
 
 struct ControllerSynthesisResult {
   hinf::Controller controller;
-  double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ
+  double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ (the LMI's γ, or the closed loop's certified norm if larger)
   ControllerCertificate certificate;
   int newton_iterations = 0;
   int lmi_order = 0, variables = 0;
