@@ -48,11 +48,13 @@ void VerboseLog::set_activity(const std::string& what) {
 
 void VerboseLog::watch() {
   std::unique_lock<std::mutex> lock(mutex_);
+  // when the watchdog speaks next: quiet_s_ after the last line (both move under the lock)
+  const auto due = [this] {
+    return last_line_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(quiet_s_));
+  };
   while (!stop_) {
-    const auto due = last_line_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(quiet_s_));
-    if (wake_.wait_until(lock, due, [this] { return stop_; })) return;
-    if (Clock::now() < last_line_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(quiet_s_)))
-      continue;  // a line came meanwhile
+    if (wake_.wait_until(lock, due(), [this] { return stop_; })) return;
+    if (Clock::now() < due()) continue;  // a line came meanwhile
     std::fprintf(out_, "      (still working%s%s: %.1f s in all)\n", activity_.empty() ? "" : " after ",
                  activity_.c_str(), seconds_since(start_));
     std::fflush(out_);

@@ -81,9 +81,7 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
   kv(out, "lmi_order", r.lmi_order);
   kv(out, "variables", r.variables);
   out << YAML::EndMap;
-  out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
-  kv(out, "solve_time_s", r.time_s);
-  out << YAML::EndMap;
+  emit_timing(out, r.time_s);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

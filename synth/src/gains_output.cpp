@@ -86,9 +86,7 @@ void emit_solver(YAML::Emitter& out, const SolverInfo& s) {
   kv(out, "lmi_margin", s.lmi_margin);
   kv(out, "scaling", s.scaling);
   out << YAML::EndMap;
-  out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
-  kv(out, "solve_time_s", s.time_s);
-  out << YAML::EndMap;
+  emit_timing(out, s.time_s);
 }
 
 }  // namespace

@@ -23,6 +23,14 @@ void kv(YAML::Emitter& out, const char* key, const T& v) {
   out << YAML::Key << key << YAML::Value << v;
 }
 
+// The `timing:` section, last in every output file: the only bytes that differ between
+// two runs of the same input.
+inline void emit_timing(YAML::Emitter& out, double solve_time_s) {
+  out << YAML::Key << "timing" << YAML::Value << YAML::BeginMap;
+  kv(out, "solve_time_s", solve_time_s);
+  out << YAML::EndMap;
+}
+
 inline std::string eigen_version() {
   return std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
          std::to_string(EIGEN_MINOR_VERSION);
