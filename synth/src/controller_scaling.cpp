@@ -4,16 +4,11 @@
 #include <cmath>
 
 #include "hinf/certify/balance.hpp"
+#include "hinf/synth/plant_scaling.hpp"
 
 namespace hinf::synth {
 
 namespace {
-
-// The power of two nearest to 1/v (1 for v = 0 or non-finite): a unit that brings v to ~1.
-double unit_for(double v) {
-  if (!(v > 0) || !std::isfinite(v)) return 1.0;
-  return std::ldexp(1.0, -static_cast<int>(std::lround(std::log2(v))));
-}
 
 Eigen::MatrixXd hcat(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   Eigen::MatrixXd m(a.rows(), a.cols() + b.cols());

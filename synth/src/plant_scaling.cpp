@@ -16,12 +16,6 @@ namespace {
 // settle the interplay (C's rows enter the state balance and the other way round).
 constexpr int kRounds = 3;
 
-// The power of two nearest to 1/v (1 for v = 0 or non-finite): a unit that brings v to ~1.
-double unit_for(double v) {
-  if (!(v > 0) || !std::isfinite(v)) return 1.0;
-  return std::ldexp(1.0, -static_cast<int>(std::lround(std::log2(v))));
-}
-
 // The uncertainty split (docs/maths.md (24)): the power of two s with ‖sH‖ ≈ ‖E/s‖.
 double split_for(const Plant& p) {
   if (!p.uncertain() || !(p.H.norm() > 0) || !(p.E.norm() > 0)) return 1.0;
@@ -48,6 +42,11 @@ std::string PlantScaling::summary() const {
   o << "x: 2^" << exponents(state) << ", y: 2^" << exponents(measurement) << ", w,v: 2^" << std::ilogb(input)
     << ", z: 2^" << std::ilogb(output) << ", H/E: 2^" << std::ilogb(uncertainty);
   return o.str();
+}
+
+double unit_for(double v) {
+  if (!(v > 0) || !std::isfinite(v)) return 1.0;
+  return std::ldexp(1.0, -static_cast<int>(std::lround(std::log2(v))));
 }
 
 PlantScaling identity_scaling(const Plant& plant) {

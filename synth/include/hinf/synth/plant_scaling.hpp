@@ -28,6 +28,10 @@ struct PlantScaling {
 
 // The identity scaling for a plant's dimensions.
 PlantScaling identity_scaling(const hinf::Plant& plant);
+
+// The power of two nearest to 1/v (1 for v = 0 or non-finite): a unit that brings v to ~1
+// (the plant's and the generalised plant's equilibration, controller_scaling.cpp).
+double unit_for(double v);
 // The scaling chosen from the plant's data: alternating rounds of state balancing, unit
 // row norms of [C D], and unit norms of [B; D] and L, then s with ‖H̃‖ ≈ ‖Ẽ‖.
 PlantScaling choose_scaling(const hinf::Plant& plant);
