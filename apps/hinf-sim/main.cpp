@@ -19,36 +19,17 @@
 #include "hinf/sim/monte_carlo.hpp"
 #include "hinf/sim/plots.hpp"
 #include "hinf/sim/report.hpp"
+#include "hinf/sim/hold_scenario_yaml.hpp"
 #include "hinf/sim/scenario_yaml.hpp"
+#include "hinf/common/input_file.hpp"
+#include "options.hpp"
 
 namespace {
 
 constexpr int kExitInvalid = 2;
 constexpr int kExitNumerical = 4;
 
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-  void operator()(long done, long total) const {
-    if (!enabled_) return;
-    const int width = 40;
-    const int filled = static_cast<int>(width * done / total);
-    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done << "/" << total
-              << " runs" << (done == total ? "\n" : "") << std::flush;
-  }
-
- private:
-  bool enabled_;
-};
-
-struct Options {
-  std::string scenario_path, out_dir;
-  long runs = 1;
-  std::uint64_t seed = 1;
-  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::optional<double> duration;
-  bool no_plots = false, quiet = false, verbose = false;
-};
+using hinf::sim_cli::Options;
 
 // CLI11's own checks let "nan" through PositiveNumber (NaN <= 0 is false) and let an
 // unsigned option wrap "-1" to 2^64 - 1.
@@ -76,6 +57,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--runs", o.runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
       ->check(CLI::Range(1L, 1000000L));
   app.add_option("--seed", o.seed, "base seed, a whole number in [0, 2^64 - 1]")->check(kWholeNumber);
+  o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   app.add_option("--jobs,-j", o.jobs, "parallel runs (default: hardware threads)")->check(CLI::Range(1, 4096));
   app.add_option("--duration", o.duration, "override the scenario's duration (s)")->check(kFinitePositive);
   app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
@@ -165,6 +147,13 @@ int run(int argc, char** argv) {
   }
 
   using namespace hinf::sim;
+  try {  // the scenario family: `scenario: tumbling_hold`, or the Hill experiments
+    const std::string text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
+    if (scenario_family(text, o.scenario_path) == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
+  } catch (const hinf::Error& e) {
+    std::cerr << "hinf-sim: error: " << e.what() << "\n";
+    return hinf::exit_code(e.code());
+  }
   SummaryContext context;
   context.scenario_path = o.scenario_path;
   context.seed = o.seed;
@@ -179,7 +168,7 @@ int run(int argc, char** argv) {
 
   std::vector<RunResult> results;
   try {
-    results = run_monte_carlo(setup, o.runs, o.seed, o.jobs, ProgressBar(!o.quiet && o.runs > 1));
+    results = run_monte_carlo(setup, o.runs, o.seed, o.jobs, hinf::sim_cli::progress_bar(!o.quiet && o.runs > 1));
   } catch (const std::invalid_argument& e) {  // runtime filters refusing their gains/settings
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return kExitInvalid;
@@ -201,6 +190,20 @@ int run(int argc, char** argv) {
 }
 
 }  // namespace
+
+namespace hinf::sim_cli {
+
+std::function<void(long, long)> progress_bar(bool enabled) {
+  if (!enabled) return nullptr;
+  return [](long done, long total) {
+    const int width = 40;
+    const int filled = static_cast<int>(width * done / total);
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done << "/" << total
+              << " runs" << (done == total ? "\n" : "") << std::flush;
+  };
+}
+
+}  // namespace hinf::sim_cli
 
 int main(int argc, char** argv) {
   // ulimit -f: EFBIG from the atomic writer (temporaries removed), not a kill mid-file

@@ -17,6 +17,14 @@ std::uint64_t run_seed(std::uint64_t seed, long run_index) {
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
                                        const ProgressCallback& progress) {
   std::vector<RunResult> results(static_cast<std::size_t>(runs));
+  for_each_run(
+      runs, jobs,
+      [&](long i) { results[static_cast<std::size_t>(i)] = simulate_run(setup, run_seed(seed, i), i == 0); },
+      progress);
+  return results;
+}
+
+void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress) {
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
   std::atomic<long> next{0};
   std::atomic<bool> failed{false};
@@ -28,7 +36,7 @@ std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::ui
       const long i = next.fetch_add(1);
       if (i >= runs || failed.load()) return;
       try {
-        results[static_cast<std::size_t>(i)] = simulate_run(setup, run_seed(seed, i), i == 0);
+        run(i);
       } catch (...) {
         errors[static_cast<std::size_t>(i)] = std::current_exception();
         failed.store(true);
@@ -55,7 +63,6 @@ std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::ui
   for (auto& t : threads) t.join();
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
-  return results;
 }
 
 }  // namespace hinf::sim

@@ -73,15 +73,9 @@ std::string plot_script(const Trajectory& tr, const std::string& title, const st
 
 }  // namespace
 
-std::vector<std::string> write_plots(const std::string& dir, const Trajectory& tr, const std::string& title,
-                                     AtomicFileSet& outputs) {
+void run_plot_script(const std::string& script, const std::vector<std::string>& png,
+                     const std::vector<std::string>& names) {
   namespace fs = std::filesystem;
-  const std::vector<std::string> names = {"position_error.png", "velocity_error.png", "thrust.png"};
-  std::vector<std::string> png;
-  for (const auto& n : names) png.push_back(outputs.reserve((fs::path(dir) / n).string()));
-  AtomicFileSet scratch;  // never committed: removed on return
-  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(tr));
-  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(tr, title, data, png));
   const int rc = run_gnuplot(script);
   if (rc != 0)
     throw PlotError(rc < 0 ? "cannot run gnuplot (is the gnuplot package installed?); use --no-plots to skip plots"
@@ -91,6 +85,18 @@ std::vector<std::string> write_plots(const std::string& dir, const Trajectory& t
     if (!fs::exists(png[i], ec) || fs::file_size(png[i], ec) == 0)
       throw PlotError("gnuplot produced no output for " + names[i]);
   }
+}
+
+std::vector<std::string> write_plots(const std::string& dir, const Trajectory& tr, const std::string& title,
+                                     AtomicFileSet& outputs) {
+  namespace fs = std::filesystem;
+  const std::vector<std::string> names = {"position_error.png", "velocity_error.png", "thrust.png"};
+  std::vector<std::string> png;
+  for (const auto& n : names) png.push_back(outputs.reserve((fs::path(dir) / n).string()));
+  AtomicFileSet scratch;  // never committed: removed on return
+  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(tr));
+  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(tr, title, data, png));
+  run_plot_script(script, png, names);
   return names;
 }
 

@@ -1,42 +1,8 @@
 #include "hinf/sim/report.hpp"
 
-#include <cmath>
-#include <cstdio>
-#include <nlohmann/json.hpp>
-#include <stdexcept>
+#include "summary_json.hpp"
 
 namespace hinf::sim {
-namespace {
-
-void append_num(std::string& out, double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  out += buf;
-}
-
-using Json = nlohmann::ordered_json;  // keys in the order written
-
-// summary.json never holds a non-finite number (docs/experiments.md, "Output files").
-Json json_num(double v) {
-  if (!std::isfinite(v)) throw std::logic_error("summary.json: refusing to write a non-finite number");
-  return v;
-}
-
-Json json_opt(const std::optional<double>& v) { return v ? json_num(*v) : Json(nullptr); }
-
-Json json_stats(const std::vector<std::optional<double>>& values) {
-  const MetricStats s = compute_stats(values);
-  if (s.count == 0) return nullptr;
-  Json j = Json::object();
-  j["mean"] = json_num(s.mean);
-  j["std"] = json_num(s.std);
-  j["min"] = json_num(s.min);
-  j["max"] = json_num(s.max);
-  j["count"] = s.count;
-  return j;
-}
-
-}  // namespace
 
 std::string format_trajectory_csv(const Trajectory& tr) {
   std::string out;

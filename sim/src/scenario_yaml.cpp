@@ -13,6 +13,7 @@
 #include "hinf/common/input_file.hpp"
 #include "hinf/common/number_text.hpp"
 #include "hinf/common/yaml_reader.hpp"
+#include "scenario_paths.hpp"
 
 namespace hinf::sim {
 namespace {
@@ -175,15 +176,6 @@ void read_estimate(const YamlMap& top, Scenario& s) {
   s.divergence_limit_m = e.positive("divergence_limit", s.divergence_limit_m);
 }
 
-std::string resolve(const YamlMap& n, const std::string& key, const std::string& scenario_path) {
-  std::filesystem::path p(n.word(key));
-  if (p.is_relative()) p = std::filesystem::path(scenario_path).parent_path() / p;
-  if (!std::filesystem::exists(p))
-    n.fail(key, "file '" + p.string() +
-                    "' does not exist (relative paths resolve against the scenario file's directory)");
-  return p.lexically_normal().string();
-}
-
 // An LTI filter's gains: exactly one of a gains file or a synthesis config.
 LtiGainsSource read_lti(const YamlMap& filters, const std::string& key, const std::string& scenario_path) {
   const YamlMap n = filters.map(key, {"gains", "synthesize"});
@@ -191,8 +183,8 @@ LtiGainsSource read_lti(const YamlMap& filters, const std::string& key, const st
     n.reader().fail(n.node(), n.path() + ": needs exactly one of 'gains' (a gains file) or "
                                          "'synthesize' (a synthesis config)");
   LtiGainsSource source;
-  if (n.has("gains")) source.gains_path = resolve(n, "gains", scenario_path);
-  else source.synthesize_path = resolve(n, "synthesize", scenario_path);
+  if (n.has("gains")) source.gains_path = resolve_scenario_file(n, "gains", scenario_path);
+  else source.synthesize_path = resolve_scenario_file(n, "synthesize", scenario_path);
   return source;
 }
 

@@ -24,6 +24,10 @@ void emit_certificate(YAML::Emitter& out, const ControllerCertificate& c, double
     kv(out, "max_pole_modulus", c.max_pole_modulus);
     kv(out, "poles_in_disk", c.poles_in_disk);
   }
+  if (c.robust_channel_norm) {  // small gain over the channel of docs/maths.md (160)
+    kv(out, "robust_channel_hinf_norm", *c.robust_channel_norm);
+    kv(out, "robustly_stable", c.robustly_stable);
+  }
   kv(out, "lmi_max_eigenvalue", c.lmi_max_eigenvalue);
   kv(out, "cond_N", c.cond_N);
   out << YAML::EndMap;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <optional>
 #include <string>
 
 #include "controller_lmi.hpp"
@@ -43,6 +45,70 @@ void check_dimensions(const hinf::GeneralisedPlant& P) {
   need("D21", P.D21, P.ny(), P.nw());
   if (P.time == hinf::TimeDomain::Discrete && !(P.sample_time > 0))
     throw Error(ErrorCode::InvalidInput, "controller.sample_time: must be positive in discrete time", "sample_time");
+}
+
+// ‖T_qp‖∞ of the closed loop (147) `cl` of P: p enters the plant's state by H, q = E x
+// (docs/maths.md (160)); the controller's states are neither perturbed nor read.
+double robust_channel_norm(const hinf::GeneralisedPlant& P, const hinf::StateSpace& cl,
+                           const hinf::UncertaintyChannel& channel) {
+  const Eigen::Index n = P.n(), ncl = cl.A.rows();
+  if (channel.H.rows() != n || channel.E.cols() != n)
+    throw Error(ErrorCode::InvalidInput, "controller.robust: H must have " + std::to_string(n) + " rows and E " +
+                                             std::to_string(n) + " columns (the plant's states), got H " +
+                                             std::to_string(channel.H.rows()) + "x" + std::to_string(channel.H.cols()) +
+                                             " and E " + std::to_string(channel.E.rows()) + "x" +
+                                             std::to_string(channel.E.cols()), "robust");
+  hinf::StateSpace t;
+  t.A = cl.A;
+  t.B = Eigen::MatrixXd::Zero(ncl, channel.H.cols());
+  t.B.topRows(n) = channel.H;
+  t.C = Eigen::MatrixXd::Zero(channel.E.rows(), ncl);
+  t.C.leftCols(n) = channel.E;
+  t.D = Eigen::MatrixXd::Zero(channel.E.rows(), channel.H.cols());
+  return (P.time == hinf::TimeDomain::Discrete ? certify::discrete_hinf_norm(t, kNormTolerance)
+                                                : certify::continuous_hinf_norm(t, kNormTolerance))
+      .norm;
+}
+
+// A mode of A counts as unreached (unseen) when the PBH matrix [A − λI, X] ([A − λI; X]) has a
+// singular value this small relative to its scale (docs/maths.md (126)).
+constexpr double kPbhRelativeTolerance = 1e-10;
+
+// The first eigenvalue λ of A outside the stability region (Re λ ≥ 0, or |λ| ≥ 1 in discrete
+// time) at which [A − λI; X] loses rank, if any: an unstable mode X does not see.
+std::optional<std::complex<double>> unseen_unstable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X,
+                                                         bool discrete) {
+  const Eigen::Index n = A.rows();
+  Eigen::ComplexEigenSolver<Eigen::MatrixXd> es(A, false);
+  Eigen::MatrixXd AX(n + X.rows(), n);
+  AX << A, X;
+  const double scale = std::max(1.0, AX.norm());
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    const std::complex<double> lambda = es.eigenvalues()(i);
+    if (discrete ? std::abs(lambda) < 1 : lambda.real() < 0) continue;
+    Eigen::MatrixXcd pbh(n + X.rows(), n);
+    pbh << A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n), X.cast<std::complex<double>>();
+    if (Eigen::JacobiSVD<Eigen::MatrixXcd>(pbh).singularValues()(n - 1) <= kPbhRelativeTolerance * scale) return lambda;
+  }
+  return std::nullopt;
+}
+
+// No controller stabilises the loop unless (A, B2) is stabilisable and (A, C2) detectable
+// (checked on the equilibrated plant): Error(Infeasible) naming the mode.
+void require_stabilisable_detectable(const hinf::GeneralisedPlant& P) {
+  const bool discrete = P.time == hinf::TimeDomain::Discrete;
+  const char* region = discrete ? "|λ| ≥ 1" : "Re λ ≥ 0";
+  const auto text = [](std::complex<double> z) {
+    return fmt(z.real()) + (z.imag() == 0 ? "" : (z.imag() > 0 ? " + " : " - ") + fmt(std::abs(z.imag())) + "i");
+  };
+  if (const auto l = unseen_unstable_mode(P.A.transpose(), P.B2.transpose(), discrete))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, B2) is not stabilisable: the mode λ = " + text(*l) + " of A (" +
+                                           region + ") is not reached by the control u, so no controller makes the "
+                                           "closed loop stable (PBH test, docs/maths.md (126))");
+  if (const auto l = unseen_unstable_mode(P.A, P.C2, discrete))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, C2) is not detectable: the mode λ = " + text(*l) + " of A (" +
+                                           region + ") is not seen in the measurement y, so no controller makes the "
+                                           "closed loop stable (PBH test, docs/maths.md (126))");
 }
 
 }  // namespace
@@ -98,7 +164,11 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
       discrete ? certify::discrete_hinf_norm(cl, kNormTolerance) : certify::continuous_hinf_norm(cl, kNormTolerance);
   c.closed_loop_hinf_norm = h.norm;
   c.peak_frequency = h.peak_frequency;
-  c.passed = c.poles_in_disk && c.closed_loop_hinf_norm <= gamma * (1 + kNormSlack);
+  if (design.robust) {
+    c.robust_channel_norm = robust_channel_norm(P, cl, *design.robust);
+    c.robustly_stable = *c.robust_channel_norm < 1;
+  }
+  c.passed = c.poles_in_disk && c.robustly_stable && c.closed_loop_hinf_norm <= gamma * (1 + kNormSlack);
   return c;
 }
 
@@ -113,6 +183,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   const ScaledControllerLmi S = scaled_controller_lmi(P, design);
   const ControllerScaling& sc = S.scaling;
   const hinf::GeneralisedPlant& Ps = S.plant;
+  require_stabilisable_detectable(Ps);
   const ControllerLmi& C = S.lmi;
   require_memory(C.lmi, settings, "the controller LMI");
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings), Eigen::VectorXd(),
@@ -138,6 +209,14 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   r.lmi_order = C.lmi.order();
   r.variables = C.lmi.num_params();
   r.time_s = sol.elapsed_s;
+  const ControllerCertificate& c = r.certificate;
+  if (!c.robustly_stable && c.stable && c.poles_in_disk && c.lmi_max_eigenvalue < 0 &&
+      c.closed_loop_hinf_norm <= r.gamma * (1 + kNormSlack))
+    throw Error(ErrorCode::CheckFailed,
+                "robust channel (docs/maths.md (160)): the H-infinity-optimal controller (gamma = " + fmt(r.gamma) +
+                    ") has ‖T_qp‖∞ = " + fmt(*c.robust_channel_norm) +
+                    " >= 1: small gain does not prove robust stability for this uncertainty; no controller written",
+                "robust");
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "controller certificate failed: closed loop " + std::string(r.certificate.stable ? "stable" : "unstable") +

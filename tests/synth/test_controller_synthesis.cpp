@@ -136,7 +136,7 @@ TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
   const GeneralisedPlant P = double_integrator();
   const double reference = dgkf_gamma(P);
   for (bool strictly_proper : {true, false}) {
-    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {strictly_proper, std::nullopt});
+    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {strictly_proper, std::nullopt, std::nullopt});
     EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "strictly proper " << strictly_proper;
     expect_certified(P, r);
   }
@@ -147,9 +147,9 @@ TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
 // γ-optimal controller's ill-conditioning (a pole near −1e8 rad/s, cond(N) ~ 5e4) gone.
 TEST(ControllerSynthesis, PoleDiskConfinesTheClosedLoop) {
   const GeneralisedPlant P = double_integrator();
-  const auto free = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt});
+  const auto free = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt, std::nullopt});
   for (double r : {2.0, 5.0}) {
-    const auto disk = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, r});
+    const auto disk = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, r, std::nullopt});
     const Eigen::VectorXcd poles = hinf::closed_loop(P, disk.controller).A.eigenvalues();
     EXPECT_LT(poles.cwiseAbs().maxCoeff(), r) << "r = " << r;
     EXPECT_GE(disk.gamma, dgkf_gamma(P) * (1 - 1e-9)) << "r = " << r;
@@ -167,7 +167,7 @@ TEST(ControllerSynthesis, RandomPlantsMatchDgkf) {
     const GeneralisedPlant P = normalised_plant(A, hinf::test::random_matrix(g, n, 2), hinf::test::random_matrix(g, n, 1),
                                                 hinf::test::random_matrix(g, 2, n), hinf::test::random_matrix(g, 1, n));
     const double reference = dgkf_gamma(P);
-    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt});
+    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt, std::nullopt});
     EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "trial " << trial;
     expect_certified(P, r);
   }
@@ -231,8 +231,8 @@ TEST(ControllerSynthesis, DiscreteFilteringMatchesTheRiccatiFilters) {
     const GeneralisedPlant P = filtering_plant(F);
     const double predicted = hinf::certify::optimal_hinf_predictor_gamma(F, 1e-10, hinf::Estimate::Predicted);
     const double filtered = hinf::certify::optimal_hinf_predictor_gamma(F, 1e-10, hinf::Estimate::Filtered);
-    const auto strictly_proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt});
-    const auto proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt});
+    const auto strictly_proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt, std::nullopt});
+    const auto proper = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt, std::nullopt});
     EXPECT_NEAR(strictly_proper.gamma / predicted, 1.0, 1e-6) << "trial " << trial;
     EXPECT_NEAR(proper.gamma / filtered, 1.0, 1e-6) << "trial " << trial;
     expect_certified(P, strictly_proper);

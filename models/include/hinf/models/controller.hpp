@@ -32,4 +32,22 @@ inline StateSpace closed_loop(const GeneralisedPlant& P, const Controller& K) {
   return cl;
 }
 
+// The bilinear (Tustin) transform of a continuous-time controller for period T
+// (docs/maths.md (161)): its transfer function at z is the continuous one at
+// s = (2/T)(z − 1)/(z + 1). With M = (I − A_K T/2)⁻¹:
+//   A_d = M (I + A_K T/2),  B_d = T M B_K,  C_d = C_K M,  D_d = D_K + (T/2) C_K M B_K.
+// Defined when no pole of the controller is at s = 2/T.
+inline Controller tustin(const Controller& K, double T) {
+  const Eigen::Index n = K.A_K.rows();
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(I - (T / 2) * K.A_K);
+  const Eigen::MatrixXd M = lu.inverse();
+  Controller d;
+  d.A_K = M * (I + (T / 2) * K.A_K);
+  d.B_K = T * M * K.B_K;
+  d.C_K = K.C_K * M;
+  d.D_K = K.D_K + (T / 2) * K.C_K * M * K.B_K;
+  return d;
+}
+
 }  // namespace hinf

@@ -32,4 +32,11 @@ struct GeneralisedPlant {
   int ny() const { return static_cast<int>(C2.rows()); }
 };
 
+// Unstructured uncertainty in the state matrix, A + H F E with any F (possibly time-varying)
+// of norm ‖F‖ ≤ 1 (docs/maths.md (160)); F maps q = E x to p, which enters the state by H.
+struct UncertaintyChannel {
+  Eigen::MatrixXd H;  // n×p
+  Eigen::MatrixXd E;  // q×n
+};
+
 }  // namespace hinf

@@ -18,6 +18,11 @@ using ProgressCallback = std::function<void(long, long)>;
 // Results in run-index order; run 0 keeps its trajectory. jobs ≥ 1 is an upper bound:
 // threads the system refuses to create are left out (same result). If runs throw, the
 // exception of the lowest-index failed run is rethrown after all threads have stopped.
+// The pool itself: run(i) for every i in [0, runs), on at most `jobs` threads (the same
+// contract: the lowest-index exception is rethrown after every thread has stopped). run(i)
+// must write only to its own result slot.
+void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress);
+
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
                                        const ProgressCallback& progress);
 

@@ -16,6 +16,11 @@ class PlotError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Runs the gnuplot script and checks that it drew every png (names: the files' names, for
+// messages). Throws PlotError.
+void run_plot_script(const std::string& script_path, const std::vector<std::string>& png,
+                     const std::vector<std::string>& names);
+
 // Draws DIR/position_error.png, DIR/velocity_error.png, DIR/thrust.png into temporaries of
 // `outputs` (renamed with the run's other outputs by outputs.commit()). Returns the file
 // names. Throws PlotError.

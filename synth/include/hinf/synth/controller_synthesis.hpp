@@ -22,6 +22,9 @@ struct ControllerDesign {
   // Closed-loop poles confined to |λ| < r (Chilali–Gahinet disk, docs/maths.md (153)): the
   // cure for the γ-optimal controller's ill-conditioning (very fast poles, large cond(N)).
   std::optional<double> pole_disk_radius;
+  // Unstructured uncertainty ΔA = H F E, ‖F‖ ≤ 1 (docs/maths.md (160)): the certificate adds
+  // the small-gain test ‖T_qp‖∞ < 1 of the closed loop from p (entering by H) to q = E x.
+  std::optional<hinf::UncertaintyChannel> robust;
 };
 
 struct ControllerCertificate {
@@ -42,7 +45,11 @@ struct ControllerCertificate {
   // when none was).
   double max_pole_modulus = 0;
   bool poles_in_disk = true;
-  bool passed = false;  // stable, in the disk, norm ≤ γ(1 + kNormSlack), LMI strictly negative
+  // ‖T_qp‖∞ (certified upper value) when a robust channel was given; robust stability by
+  // small gain when < 1.
+  std::optional<double> robust_channel_norm;
+  bool robustly_stable = true;  // true when no channel was given
+  bool passed = false;  // stable, in the disk, norm ≤ γ(1 + kNormSlack), LMI strictly negative, robustly stable
 };
 
 struct ControllerSynthesisResult {

@@ -1,0 +1,25 @@
+// hinf-sim's command line, shared by the scenario families (main.cpp, tumbling_hold.cpp).
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace hinf::sim_cli {
+
+struct Options {
+  std::string scenario_path, out_dir;
+  long runs = 1;
+  std::uint64_t seed = 1;
+  int jobs = 1;
+  std::optional<double> duration;
+  bool no_plots = false, quiet = false, verbose = false;
+};
+
+// Monte-Carlo progress on stderr (a bar), or nothing.
+std::function<void(long, long)> progress_bar(bool enabled);
+
+// A `scenario: tumbling_hold` run (docs/experiments.md "Seed 004"): its exit code.
+int run_tumbling_hold(const Options& o, const std::string& scenario_text);
+
+}  // namespace hinf::sim_cli

@@ -1,0 +1,128 @@
+// format_hold_* and write_hold_plots (hold_report.hpp).
+#include "hinf/sim/hold_report.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "hinf/common/gnuplot.hpp"
+#include "hinf/sim/plots.hpp"
+#include "summary_json.hpp"
+
+namespace hinf::sim {
+namespace {
+
+void append_vector(std::string& out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) out += ',', append_num(out, v(i));
+}
+
+// The metrics of one run in the order of runs.csv and summary.json.
+std::vector<std::pair<const char*, std::optional<double>>> metric_list(const HoldMetrics& m) {
+  return {{"position_rms_m", m.position_rms_m},
+          {"position_max_m", m.position_max_m},
+          {"velocity_rms_mps", m.velocity_rms_mps},
+          {"settle_time_s", m.settle_time_s},
+          {"delta_v_mps", m.delta_v_mps},
+          {"pulse_count", static_cast<double>(m.pulse_count)},
+          {"min_pulse_s", m.min_pulse_s},
+          {"saturation_fraction", m.saturation_fraction}};
+}
+
+}  // namespace
+
+std::string format_hold_trajectory_csv(const HoldTrajectory& tr) {
+  std::string out = "t,err_x,err_y,err_z,vel_x,vel_y,vel_z,cmd_x,cmd_y,cmd_z,force_x,force_y,force_z,pulse_x,pulse_y,pulse_z\n";
+  out.reserve(tr.t.size() * 16 * 24);
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    append_num(out, tr.t[k]);
+    append_vector(out, tr.error[k]);
+    append_vector(out, tr.velocity[k]);
+    append_vector(out, tr.command[k]);
+    append_vector(out, tr.force[k]);
+    for (int i = 0; i < 3; ++i) out += ',' + std::to_string(tr.pulse[k](i));
+    out += '\n';
+  }
+  return out;
+}
+
+std::string format_hold_runs_csv(const std::vector<HoldRunResult>& runs) {
+  std::string out = "run,seed";
+  for (const auto& [name, value] : metric_list(HoldMetrics())) out += std::string(",") + name;
+  out += '\n';
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    out += std::to_string(r) + "," + std::to_string(runs[r].seed);
+    for (const auto& [name, value] : metric_list(runs[r].metrics)) {
+      out += ',';
+      if (value) append_num(out, *value);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string format_hold_summary_json(const HoldScenario& s, const std::vector<HoldRunResult>& runs,
+                                     const HoldSummaryContext& ctx) {
+  Json j = Json::object();
+  j["format"] = "hinf-sim-summary/1";
+  j["family"] = "tumbling_hold";
+  j["scenario"] = ctx.scenario_path;
+  j["seed"] = ctx.seed;
+  j["runs"] = runs.size();
+  j["duration_s"] = json_num(s.duration);
+  j["control_sample_time_s"] = json_num(s.control_sample_time);
+  j["integration_step_s"] = json_num(s.integration_step);
+  j["modulator"] = to_string(s.modulator);
+  j["steady_state_start_s"] = json_num(s.steady_state_start);
+  j["settle_threshold_m"] = json_num(s.settle_threshold);
+  Json& c = j["controller"] = Json::object();
+  c["origin"] = ctx.controller_origin;
+  c["gamma"] = json_opt(ctx.gamma);
+  c["feedforward_N"] = {json_num(ctx.feedforward(0)), json_num(ctx.feedforward(1)), json_num(ctx.feedforward(2))};
+  Json& m = j["metrics"] = Json::object();
+  const auto names = metric_list(HoldMetrics());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::vector<std::optional<double>> values;
+    for (const auto& run : runs) values.push_back(metric_list(run.metrics)[i].second);
+    m[names[i].first] = runs.size() == 1 ? json_opt(values.front()) : json_stats(values);
+  }
+  if (runs.size() > 1) {
+    long never = 0;
+    for (const auto& run : runs) never += run.metrics.settle_time_s ? 0 : 1;
+    j["never_settled_runs"] = never;
+  }
+  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+void write_hold_plots(const std::string& dir, const HoldTrajectory& tr, const std::string& title,
+                      hinf::AtomicFileSet& outputs) {
+  namespace fs = std::filesystem;
+  const std::vector<std::string> names = {"position.png", "velocity.png", "thrusters.png"};
+  std::vector<std::string> png;
+  for (const auto& n : names) png.push_back(outputs.reserve((fs::path(dir) / n).string()));
+  std::ostringstream data;
+  data.precision(9);
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    data << tr.t[k];
+    for (const auto* v : {&tr.error[k], &tr.velocity[k], &tr.force[k]})
+      for (int i = 0; i < 3; ++i) data << ' ' << (*v)(i);
+    data << '\n';
+  }
+  hinf::AtomicFileSet scratch;  // never committed: removed on return
+  const std::string dat = scratch.add((fs::path(dir) / "plot.dat").string(), data.str());
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\nset grid\nset key outside right top\n"
+     << "set xlabel 'time (s)'\n";
+  const char* what[] = {"position error ρ − ρ* (m)", "velocity ρ̇ (m/s)", "thrust, mean over each 0.1 s (N)"};
+  for (int f = 0; f < 3; ++f) {
+    gp << "set output " << gnuplot_quoted(png[f]) << "\nset ylabel " << gnuplot_quoted(what[f])
+       << "\nset title " << gnuplot_quoted(title + ": " + what[f]) << " noenhanced\nplot ";
+    for (int i = 0; i < 3; ++i)
+      gp << (i ? ", " : "") << gnuplot_quoted(dat) << " using 1:" << 2 + 3 * f + i << " with lines lw 1.2 title "
+         << gnuplot_quoted(std::string(1, "xyz"[i]));
+    gp << "\n";
+  }
+  gp << "set output\n";
+  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), gp.str());
+  run_plot_script(script, png, names);
+}
+
+}  // namespace hinf::sim

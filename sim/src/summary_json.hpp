@@ -1,0 +1,45 @@
+// The number formats of hinf-sim's output files, shared by the scenario families:
+// CSV cells with 17 significant digits, and summary.json numbers that are never
+// non-finite, with {mean, std, min, max, count} over Monte-Carlo runs.
+#pragma once
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hinf/sim/metrics.hpp"
+
+namespace hinf::sim {
+
+inline void append_num(std::string& out, double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  out += buf;
+}
+
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+// summary.json never holds a non-finite number (docs/experiments.md, "Output files").
+inline Json json_num(double v) {
+  if (!std::isfinite(v)) throw std::logic_error("summary.json: refusing to write a non-finite number");
+  return v;
+}
+
+inline Json json_opt(const std::optional<double>& v) { return v ? json_num(*v) : Json(nullptr); }
+
+inline Json json_stats(const std::vector<std::optional<double>>& values) {
+  const MetricStats s = compute_stats(values);
+  if (s.count == 0) return nullptr;
+  Json j = Json::object();
+  j["mean"] = json_num(s.mean);
+  j["std"] = json_num(s.std);
+  j["min"] = json_num(s.min);
+  j["max"] = json_num(s.max);
+  j["count"] = s.count;
+  return j;
+}
+
+}  // namespace hinf::sim
