@@ -7,6 +7,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "controller_files.hpp"
 #include "hinf/synth/analysis.hpp"
 
 namespace hinf::cli {
@@ -75,6 +76,7 @@ void add_analyze(CLI::App& app, Action& action) {
       ->check(CLI::Range(2, 100001));
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      if (is_controller_config(args->config)) return analyze_controller_file(args->config, args->gains, *json);
       const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
       const synth::SynthConfig& cfg = in.config;
       const runtime_yaml::GainsFile& g = in.gains;

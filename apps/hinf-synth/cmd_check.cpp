@@ -8,12 +8,13 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "controller_files.hpp"
 #include "hinf/synth/regression.hpp"
 
 namespace hinf::cli {
 
 void add_check(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("check", "re-synthesise and compare with a golden gains file (exit 0 same, 1 changed)");
+  auto* cmd = app.add_subcommand("check", "re-synthesise and compare with a golden gains or controller file (exit 0 same, 1 changed)");
   auto config = std::make_shared<std::string>();
   auto golden = std::make_shared<std::string>();
   auto rtol = std::make_shared<double>(1e-6);
@@ -23,6 +24,7 @@ void add_check(CLI::App& app, Action& action) {
       ->check(CLI::Range(1e-14, 1.0));
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      if (is_controller_config(*config)) return check_controller_file(*config, *golden, *rtol);
       const ConfigAndFilter in = load_config_and_filter(*config, *golden);
       const synth::SynthConfig& cfg = in.config;
       const runtime_yaml::GainsFile& g = in.gains;

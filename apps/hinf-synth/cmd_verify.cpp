@@ -3,6 +3,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "controller_files.hpp"
 #include "hinf/synth/regression.hpp"
 
 namespace hinf::cli {
@@ -29,10 +30,11 @@ std::string multipliers_text(const synth::Certificate& c) {
 }  // namespace
 
 void add_verify(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config");
+  auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config, or of a controller file against a controller config");
   const auto args = add_config_gains_args(*cmd, "gains YAML (must state gamma)");
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      if (is_controller_config(args->config)) return verify_controller_file(args->config, args->gains);
       const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
       const synth::SynthConfig& cfg = in.config;
       const runtime_yaml::GainsFile& g = in.gains;

@@ -2,7 +2,7 @@
 # Shared by tests/regression/CMakeLists.txt (configure time), golden_coverage.cmake
 # (test time, cmake -P) and, in spirit, scripts/regenerate-golden (same rule in bash).
 #
-# A synthesis config is a top-level configs/*.yaml with a top-level `system:` or `hill:`
+# A synthesis config is a top-level configs/*.yaml with a top-level `system:`, `hill:` or `controller:`
 # key (docs/file-formats.md). Gains files kept in configs/ (format: hinf-gains/1, e.g.
 # paper-published-gains.yaml) and the sim scenarios under configs/scenarios/ are not.
 # Its golden file is tests/golden/<config-stem>.yaml.
@@ -14,7 +14,7 @@ function(hinf_synthesis_configs out dir)
   list(SORT candidates)
   set(result "")
   foreach(f IN LISTS candidates)
-    file(STRINGS "${f}" top REGEX "^(system|hill)[ \t]*:")
+    file(STRINGS "${f}" top REGEX "^(system|hill|controller)[ \t]*:")
     if(top)
       list(APPEND result "${f}")
     endif()

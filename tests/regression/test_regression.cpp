@@ -165,6 +165,55 @@ INSTANTIATE_TEST_SUITE_P(ShippedConfigs, GoldenCheckUlp,
                            return s;
                          });
 
+// Controller files (docs/maths.md §26): the golden check and verify of configs/tumbling-hold.yaml.
+const std::string kControllerConfig = kSource + "/configs/tumbling-hold.yaml";
+const std::string kControllerGolden = kSource + "/tests/golden/tumbling-hold.yaml";
+
+// A golden controller file with its gamma line replaced by `gamma`.
+std::string controller_with_gamma(const TempDir& dir, double gamma) {
+  std::string text = hinf::test::read_text(kControllerGolden);
+  const auto at = text.find("\ngamma: ");
+  const auto end = text.find('\n', at + 1);
+  char line[64];
+  std::snprintf(line, sizeof line, "\ngamma: %.17g", gamma);
+  text.replace(at, end - at, line);
+  const std::string path = dir / "controller.yaml";
+  hinf::test::write_text(path, text);
+  return path;
+}
+
+TEST(ControllerGolden, SameWhenUnchangedAndAfterAOneUlpChangeOfTheMass) {
+  EXPECT_EQ(synth("check " + kControllerConfig + " --golden " + kControllerGolden).exit_code, 0);
+  TempDir dir;
+  std::string text = hinf::test::read_text(kControllerConfig);
+  const std::string from = "servicer_mass: 500 ", to = "servicer_mass: 500.00000000000006 ";
+  ASSERT_EQ(std::strtod("500.00000000000006", nullptr), std::nextafter(500.0, 1000.0));
+  const auto pos = text.find(from);
+  ASSERT_NE(pos, std::string::npos);
+  text.replace(pos, from.size(), to);
+  hinf::test::write_text(dir / "tumbling-hold.yaml", text);
+  EXPECT_EQ(synth("check " + (dir / "tumbling-hold.yaml") + " --golden " + kControllerGolden).exit_code, 0);
+}
+
+TEST(ControllerGolden, ChangedGammaOrControllerFails) {
+  TempDir dir;
+  // the golden γ moved by 1 %: CHANGED
+  const auto r = synth("check " + kControllerConfig + " --golden " + controller_with_gamma(dir, 0.0632017 * 1.01));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("CHANGED"), std::string::npos) << r.output;
+  // another design's controller (integral action, 9 states) against this config: CHANGED
+  const auto other = synth("check " + kControllerConfig + " --golden " + kSource + "/tests/golden/tumbling-hold-integral.yaml");
+  EXPECT_EQ(other.exit_code, 1) << other.output;
+}
+
+TEST(ControllerVerify, HoldsForTheGoldenAndFailsAnOverstatedGamma) {
+  EXPECT_EQ(synth("verify " + kControllerConfig + " " + kControllerGolden).exit_code, 0);
+  TempDir dir;
+  const auto r = synth("verify " + kControllerConfig + " " + controller_with_gamma(dir, 0.0632017 * 0.98));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("NOT verified: the closed loop's norm is 0.0632016"), std::string::npos) << r.output;
+}
+
 // `verify CONFIG GAINS` exits 0 when the file's gamma holds for its filter, 1 if not.
 // "verify fails a gamma overstated by 2%" (the issue) is read as: the *performance* is
 // overstated, i.e. the file claims a bound 2% BELOW what the filter is certified to

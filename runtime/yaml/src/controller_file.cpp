@@ -40,6 +40,10 @@ ControllerFile parse_controller_yaml(const std::string& text, const std::string&
   const YamlReader reader(source_name);
   const YAML::Node root =
       reader.load(text, std::string("empty file; expected a controller file (format: ") + kFormat + ")");
+  // the format first: a gains file given for a controller file is named as such
+  if (root.IsMap() && root["format"] && reader.word(root["format"], "format") != kFormat)
+    reader.fail(root["format"], "format: unsupported format '" + reader.word(root["format"], "format") +
+                                    "', expected '" + kFormat + "'");
   const YamlMap top = reader.map(root, "", {"format", "tool", "config_sha256", "time", "sample_time", "dimensions",
                                             "gamma", "bound", "controller", "closed_loop_poles", "certificate",
                                             "solver", "timing"});

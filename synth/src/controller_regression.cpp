@@ -1,0 +1,89 @@
+// verify_controller, compare_controller_with_golden (controller_regression.hpp).
+#include "hinf/synth/controller_regression.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hinf/certify/balance.hpp"
+#include "hinf/certify/hinf_norm.hpp"
+#include "hinf/common/error.hpp"
+
+namespace hinf::synth {
+namespace {
+
+// A golden controller within this relative γ still counts as optimal (as for filters).
+constexpr double kEquallyOptimalTolerance = 1e-6;
+// Relative accuracy of the controllers' H∞ norms.
+constexpr double kNormTolerance = 1e-9;
+
+void require_fits(const hinf::GeneralisedPlant& P, const hinf::Controller& K) {
+  const Eigen::Index nk = K.A_K.rows();
+  if (K.A_K.cols() != nk || K.B_K.rows() != nk || K.C_K.cols() != nk || K.B_K.cols() != P.ny() ||
+      K.C_K.rows() != P.nu() || K.D_K.rows() != P.nu() || K.D_K.cols() != P.ny())
+    throw Error(ErrorCode::InvalidInput,
+                "the controller (B_K " + std::to_string(K.B_K.rows()) + "x" + std::to_string(K.B_K.cols()) + ", C_K " +
+                    std::to_string(K.C_K.rows()) + "x" + std::to_string(K.C_K.cols()) +
+                    ") does not fit the config's plant (ny = " + std::to_string(P.ny()) +
+                    " measurements, nu = " + std::to_string(P.nu()) + " controls)");
+}
+
+hinf::StateSpace as_system(const hinf::Controller& K) { return {K.A_K, K.B_K, K.C_K, K.D_K}; }
+
+bool stable(const hinf::Controller& K, bool discrete) {
+  if (K.A_K.rows() == 0) return true;
+  const Eigen::VectorXcd l = certify::balanced_eigenvalues(K.A_K);
+  return discrete ? l.cwiseAbs().maxCoeff() < 1 : l.real().maxCoeff() < 0;
+}
+
+double hinf_norm(const hinf::StateSpace& s, bool discrete) {
+  return (discrete ? certify::discrete_hinf_norm(s, kNormTolerance) : certify::continuous_hinf_norm(s, kNormTolerance)).norm;
+}
+
+// ‖K_a − K_b‖∞ / ‖K_a‖∞, both controllers stable.
+double relative_difference(const hinf::Controller& a, const hinf::Controller& b, bool discrete) {
+  const Eigen::Index na = a.A_K.rows(), nb = b.A_K.rows();
+  hinf::StateSpace d;
+  d.A = Eigen::MatrixXd::Zero(na + nb, na + nb);
+  d.A.topLeftCorner(na, na) = a.A_K;
+  d.A.bottomRightCorner(nb, nb) = b.A_K;
+  d.B.resize(na + nb, a.B_K.cols());
+  d.B << a.B_K, b.B_K;
+  d.C.resize(a.C_K.rows(), na + nb);
+  d.C << a.C_K, -b.C_K;
+  d.D = a.D_K - b.D_K;
+  const double reference = hinf_norm(as_system(a), discrete);
+  const double difference = hinf_norm(d, discrete);
+  return reference > 0 ? difference / reference : (difference > 0 ? INFINITY : 0.0);
+}
+
+}  // namespace
+
+ControllerVerification verify_controller(const ControllerConfig& config, const hinf::Controller& K,
+                                         double claimed_gamma) {
+  require_fits(config.plant, K);
+  ControllerVerification v;
+  v.certificate = certify_controller(config.plant, K, claimed_gamma, config.design);
+  v.holds = v.certificate.passed;
+  return v;
+}
+
+ControllerGoldenComparison compare_controller_with_golden(const ControllerConfig& config, const hinf::Controller& golden,
+                                                          double golden_gamma, const ControllerSynthesisResult& now,
+                                                          double rtol) {
+  require_fits(config.plant, golden);
+  const bool discrete = config.plant.time == hinf::TimeDomain::Discrete;
+  ControllerGoldenComparison c;
+  c.gamma_relative_change = std::abs(now.gamma - golden_gamma) / std::abs(golden_gamma);
+  c.same_gamma = c.gamma_relative_change <= rtol;
+  if (stable(golden, discrete) && stable(now.controller, discrete))
+    c.controller_difference = relative_difference(golden, now.controller, discrete);
+  c.same_controller = c.controller_difference && *c.controller_difference <= rtol;
+  if (!c.same_controller) {  // not unique at the optimum: is the golden one still certified?
+    const double tol = std::min(rtol, kEquallyOptimalTolerance);
+    c.golden_recertified = certify_controller(config.plant, golden, golden_gamma * (1 + tol), config.design);
+    c.same_controller = c.golden_recertified->passed;
+  }
+  return c;
+}
+
+}  // namespace hinf::synth
