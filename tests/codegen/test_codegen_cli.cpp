@@ -8,6 +8,10 @@
 #include <thread>
 
 #include "codegen_test_support.hpp"
+#include "hinf/runtime/lti_controller.hpp"
+#include "hinf/runtime_yaml/controller_file.hpp"
+
+#include <sstream>
 
 namespace {
 
@@ -96,6 +100,62 @@ TEST(CodegenCli, BadOptionsExit2) {
   EXPECT_EQ(codegen("--prefix nav --out " + (dir / "o")).exit_code, 2);      // no gains file
   EXPECT_EQ(codegen(g + " --prefix nav --out " + (dir / "o") + " --vector-steps 0").exit_code, 2);
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
+}
+
+}  // namespace
+
+namespace {
+
+// A discrete-time controller file (docs/maths.md (146)), D_K ≠ 0: its generated step, compiled
+// with gcc and driven by a small main, against the runtime's LtiController (an independent
+// implementation) on the same inputs.
+TEST(CodegenCli, ControllerFileStepMatchesTheRuntimeController) {
+  TempDir dir;
+  const std::string config = std::string(HINF_TEST_CONTROLLERS_DIR) + "/double-integrator-discrete.yaml";
+  auto r = hinf::test::run(cli() + " solve " + config + " -o " + (dir / "k.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string h = hinf::test::read_text(dir / "c/hold.h");
+  EXPECT_NE(h.find("#define HOLD_NU 1"), std::string::npos) << h;
+  EXPECT_NE(h.find("#define HOLD_NY 1"), std::string::npos) << h;
+  EXPECT_NE(hinf::test::read_text(dir / "c/hold.c").find("hold_D_K"), std::string::npos);
+  hinf::test::write_text(dir / "c/drive.c",
+                         "#include <stdio.h>\n#include \"hold.h\"\n"
+                         "int main(void) {\n  hold_state s; double u0[HOLD_NU] = {0}; double u[HOLD_NU];\n"
+                         "  hold_init(&s, u0);\n  for (int k = 0; k < 40; ++k) {\n"
+                         "    double y[HOLD_NY]; y[0] = (double)(k % 7) - 3.0;\n"
+                         "    hold_step(&s, y, u); printf(\"%.17g\\n\", u[0]);\n  }\n  return 0;\n}\n");
+  r = hinf::test::run("cd " + (dir / "c") + " && gcc -std=c99 -O2 -Wall -Wextra -Werror hold.c drive.c -o drive && ./drive");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto file = hinf::runtime_yaml::load_controller_file(dir / "k.yaml");
+  ASSERT_GT(file.D_K.cwiseAbs().maxCoeff(), 0.0);  // the feedthrough is exercised
+  hinf::runtime::LtiController k(file.A_K, file.B_K, file.C_K, file.D_K);
+  std::istringstream out(r.output);
+  for (int step = 0; step < 40; ++step) {
+    Eigen::VectorXd y(1);
+    y << static_cast<double>(step % 7) - 3.0;
+    double u_c = 0;
+    ASSERT_TRUE(out >> u_c) << step;
+    const double u = k.step(y)(0);
+    EXPECT_NEAR(u_c, u, 1e-12 * (1 + std::abs(u))) << step;
+  }
+  r = hinf::test::run("cd " + (dir / "c") + " && gcc -std=c99 hold.c hold_check.c -o check && ./check");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+TEST(CodegenCli, ContinuousControllerNeedsTustin) {
+  TempDir dir;
+  const std::string config = std::string(HINF_TEST_CONTROLLERS_DIR) + "/double-integrator.yaml";
+  auto r = hinf::test::run(cli() + " solve " + config + " -o " + (dir / "k.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--tustin PERIOD"), std::string::npos) << r.output;
+  EXPECT_EQ(hinf::test::list_dir(dir / "c"), "");
+  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c") + " --tustin 0.1");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(hinf::test::read_text(dir / "c/hold.h").find("Sample time: 0.10000000000000001 s"), std::string::npos);
 }
 
 }  // namespace

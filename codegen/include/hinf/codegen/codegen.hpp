@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/runtime_yaml/controller_file.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 
 namespace hinf::codegen {
@@ -41,6 +42,12 @@ void validate_codegen_prefix(const std::string& prefix);
 // for a bad prefix or options, or coefficients that do not fit the real type, and
 // Error(NumericalFailure) if the test vectors overflow (a violently unstable filter).
 GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOptions& options);
+
+// The same four files for a discrete-time controller file (docs/maths.md (146)): NAME_NX,
+// NAME_NY, NAME_NU; NAME_step(s, y, u) writes u = C_K x_K + D_K y, then x_K ← A_K x_K + B_K y;
+// NAME_init(s, u0) sets x_K = pinv(C_K) u0 (u0 = 0: at rest). A continuous-time controller is
+// refused (Error InvalidInput): discretise it first (hinf::tustin).
+GeneratedFiles generate_controller_c(const runtime_yaml::ControllerFile& controller, const CodegenOptions& options);
 
 // Writes every file into `directory` (created if missing). All files are first
 // written to temporary files in `directory` and then renamed, so a failure leaves
