@@ -32,6 +32,13 @@ int solve_controller(const synth::ControllerConfig& cfg, const std::string& outp
             << "-time controller written to " << output << " [" << r.newton_iterations << " Newton iterations, "
             << num(r.time_s) << " s]\n"
             << "cond(N) = " << num(r.certificate.cond_N) << "; gamma bounds the gain from w to z of the closed loop\n";
+  if (r.gamma_optimal)
+    std::cout << "gamma back-off" << (cfg.settings.gamma_backoff > 0 ? "" : " (automatic: I - R S is singular at the optimum)")
+              << ": the LMI's optimum is " << num(*r.gamma_optimal) << "; the controller is recovered at (1 + "
+              << num(r.backoff) << ") times it, at the point of largest LMI margin (docs/maths.md (149a))\n";
+  if (r.gamma_without_disk)
+    std::cout << "pole disk: without it the LMI's optimum is " << num(*r.gamma_without_disk) << " (+"
+              << num(100 * (r.gamma / *r.gamma_without_disk - 1)) << " % for the disk)\n";
   if (r.certificate.robust_channel_norm)
     std::cout << "robust channel: ‖T_qp‖∞ = " << num(*r.certificate.robust_channel_norm)
               << " < 1: stable for every perturbation H F E with ‖F‖ <= 1 (small gain)\n";

@@ -11,6 +11,12 @@ using Eigen::MatrixXd;
 
 namespace {
 
+// −γ I on diagonal block b (size k): the variable g, or the back-off's fixed γ.
+void add_minus_gamma_identity(ControllerLmi& C, int b, int k) {
+  if (C.g_fixed) C.lmi.add_constant(b, b, -*C.g_fixed * MatrixXd::Identity(k, k));
+  else C.lmi.add_scalar_term(b, b, C.g, -MatrixXd::Identity(k, k));
+}
+
 // The continuous-time bounded-real LMI in the new variables (docs/maths.md (149)), M ≺ 0:
 //   [ AS+SAᵀ+B2Ĉ+ĈᵀB2ᵀ   Âᵀ+A+B2D̂C2         B1+B2D̂D21    SC1ᵀ+ĈᵀD12ᵀ         ]
 //   [ ∗                  RA+AᵀR+B̂C2+C2ᵀB̂ᵀ   RB1+B̂D21     C1ᵀ+C2ᵀD̂ᵀD12ᵀ        ]
@@ -33,9 +39,9 @@ void continuous_blocks(const hinf::GeneralisedPlant& P, ControllerLmi& C) {
   M.add_term(1, 2, C.R, In, P.B1);
   M.add_term(1, 2, C.Bhat, In, P.D21);
   M.add_constant(1, 3, P.C1.transpose());
-  M.add_scalar_term(2, 2, C.g, -MatrixXd::Identity(P.nw(), P.nw()));
+  add_minus_gamma_identity(C, 2, P.nw());
   M.add_constant(2, 3, P.D11.transpose());
-  M.add_scalar_term(3, 3, C.g, -MatrixXd::Identity(P.nz(), P.nz()));
+  add_minus_gamma_identity(C, 3, P.nz());
   if (C.Dhat) {
     M.add_term(0, 1, *C.Dhat, P.B2, P.C2);
     M.add_term(0, 2, *C.Dhat, P.B2, P.D21);
@@ -74,9 +80,9 @@ void discrete_blocks(const hinf::GeneralisedPlant& P, ControllerLmi& C) {
   M.add_term(2, 5, C.S, -In, P.C1.transpose());
   M.add_term(2, 5, C.Chat, -In, P.D12.transpose(), true);
   M.add_constant(3, 5, -P.C1.transpose());
-  M.add_scalar_term(4, 4, C.g, -MatrixXd::Identity(P.nw(), P.nw()));
+  add_minus_gamma_identity(C, 4, P.nw());
   M.add_constant(4, 5, -P.D11.transpose());
-  M.add_scalar_term(5, 5, C.g, -MatrixXd::Identity(P.nz(), P.nz()));
+  add_minus_gamma_identity(C, 5, P.nz());
   if (C.Dhat) {
     M.add_term(0, 3, *C.Dhat, -P.B2, P.C2);
     M.add_term(0, 4, *C.Dhat, -P.B2, P.D21);
@@ -109,7 +115,9 @@ void pole_disk_blocks(const hinf::GeneralisedPlant& P, double r, int first, Cont
 
 }  // namespace
 
-ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design) {
+namespace {
+
+ControllerLmi build(const hinf::GeneralisedPlant& P, const ControllerDesign& design, std::optional<double> g_fixed) {
   const int n = P.n();
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
   std::vector<int> blocks = discrete ? std::vector<int>{n, n, n, n, P.nw(), P.nz()}
@@ -118,17 +126,33 @@ ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const Contro
   if (design.pole_disk_radius) blocks.insert(blocks.end(), {n, n, n, n});
   ControllerLmi C;
   C.lmi = lmi::LmiProblem(blocks);
+  C.g_fixed = g_fixed;
   C.R = C.lmi.add_symmetric("R", n);
   C.S = C.lmi.add_symmetric("S", n);
   C.Ahat = C.lmi.add_full("A_hat", n, n);
   C.Bhat = C.lmi.add_full("B_hat", n, P.ny());
   C.Chat = C.lmi.add_full("C_hat", P.nu(), n);
   if (!design.strictly_proper) C.Dhat = C.lmi.add_full("D_hat", P.nu(), P.ny());
-  C.g = C.lmi.add_scalar("gamma");
+  if (g_fixed) C.t = C.lmi.add_scalar("t");
+  else C.g = C.lmi.add_scalar("gamma");
   if (discrete) discrete_blocks(P, C);
   else continuous_blocks(P, C);
   if (design.pole_disk_radius) pole_disk_blocks(P, *design.pole_disk_radius, disk_first, C);
+  if (g_fixed)  // every diagonal block ≺ t I: minimising t maximises the LMI's margin
+    for (int b = 0; b < C.lmi.num_blocks(); ++b)
+      C.lmi.add_scalar_term(b, b, *C.t, -MatrixXd::Identity(C.lmi.block_size(b), C.lmi.block_size(b)));
   return C;
+}
+
+}  // namespace
+
+ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design) {
+  return build(P, design, std::nullopt);
+}
+
+ControllerLmi build_controller_backoff_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
+                                           double g_fixed) {
+  return build(P, design, g_fixed);
 }
 
 ControllerPoint controller_point(const ControllerLmi& C, const hinf::GeneralisedPlant& P, const Eigen::VectorXd& x) {
@@ -139,7 +163,7 @@ ControllerPoint controller_point(const ControllerLmi& C, const hinf::Generalised
   pt.Bhat = C.lmi.value(C.Bhat, x);
   pt.Chat = C.lmi.value(C.Chat, x);
   pt.Dhat = C.Dhat ? C.lmi.value(*C.Dhat, x) : MatrixXd::Zero(P.nu(), P.ny());
-  pt.gamma = C.lmi.value(C.g, x)(0, 0);
+  pt.gamma = C.g_fixed ? *C.g_fixed : C.lmi.value(C.g, x)(0, 0);
   return pt;
 }
 

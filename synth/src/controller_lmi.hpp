@@ -13,14 +13,21 @@ namespace hinf::synth {
 
 struct ControllerLmi {
   lmi::LmiProblem lmi{std::vector<int>{}};
-  lmi::VarId R, S, Ahat, Bhat, Chat, g;  // g = γ (enters linearly)
+  lmi::VarId R, S, Ahat, Bhat, Chat, g;  // g = γ (enters linearly); unused when γ is fixed
   std::optional<lmi::VarId> Dhat;        // absent for a strictly proper controller (D_K = 0)
+  std::optional<lmi::VarId> t;           // the back-off's margin: every block ≺ t I (γ fixed)
+  std::optional<double> g_fixed;         // γ of the back-off LMI
 };
 
 // Continuous time (149): blocks n, n, nw, nz of the bounded-real LMI and n, n of
 // [S I; I R] ≻ 0. Discrete time (150): blocks n, n, n, n, nw, nz. Minimise g.
 // With design.pole_disk_radius = r, four more n-blocks hold the disk LMI (153).
 ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design);
+
+// The γ back-off (docs/maths.md (149a)): the same LMI at the fixed γ = g_fixed with every
+// diagonal block ≺ t I; minimise t (the point of largest margin, as for the filters, §6).
+ControllerLmi build_controller_backoff_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
+                                           double g_fixed);
 
 // The change of variables' values at a solution x of the LMI.
 struct ControllerPoint {

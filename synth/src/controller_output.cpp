@@ -65,6 +65,11 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
   kv(out, "nu", P.nu());
   out << YAML::EndMap;
   kv(out, "gamma", r.gamma);
+  if (r.gamma_optimal) {  // before the back-off (149a)
+    kv(out, "gamma_optimal", *r.gamma_optimal);
+    kv(out, "gamma_backoff", r.backoff);
+  }
+  if (r.gamma_without_disk) kv(out, "gamma_without_disk", *r.gamma_without_disk);  // the LMI's optimum without (153)
   kv(out, "bound", std::string("gamma bounds the ") + (discrete ? "l2" : "L2") +
                        " gain from w to z of the closed loop (the H-infinity norm of T_zw, docs/maths.md (147))");
   out << YAML::Key << "controller" << YAML::Value << YAML::BeginMap;

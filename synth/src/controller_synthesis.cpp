@@ -20,6 +20,11 @@ namespace hinf::synth {
 
 namespace {
 
+// When the γ-optimal point does not give a controller (I − R S numerically singular, or a
+// certificate lost to round-off), the back-offs (149a) tried in turn.
+constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3};
+// The back-off's margin is maximised to this relative gap (as the filters', docs/maths.md §6).
+constexpr double kBackoffRelativeGap = 1e-3;
 // The closed-loop norm may exceed the solver's γ by this much (the recovery's round-off).
 constexpr double kNormSlack = 1e-6;
 // Relative accuracy of the closed-loop norm.
@@ -119,16 +124,17 @@ namespace {
 struct ScaledControllerLmi {
   ControllerScaling scaling;
   hinf::GeneralisedPlant plant;
+  ControllerDesign design;  // the disk in the scaled time unit
   ControllerLmi lmi;
 };
 ScaledControllerLmi scaled_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design) {
   ScaledControllerLmi s;
   s.scaling = choose_controller_scaling(P);
   s.plant = scaled_generalised_plant(P, s.scaling);
-  ControllerDesign scaled_design = design;
+  s.design = design;
   if (design.pole_disk_radius && P.time == hinf::TimeDomain::Continuous)
-    scaled_design.pole_disk_radius = *design.pole_disk_radius / s.scaling.time;
-  s.lmi = build_controller_lmi(s.plant, scaled_design);
+    s.design.pole_disk_radius = *design.pole_disk_radius / s.scaling.time;
+  s.lmi = build_controller_lmi(s.plant, s.design);
   return s;
 }
 
@@ -144,6 +150,22 @@ std::string controller_sdpa(const hinf::GeneralisedPlant& P, const ControllerDes
                                  " is the scaled gamma; gamma = it times " + fmt(S.scaling.gamma_factor()) +
                                  " (the equilibration (154))");
 }
+
+namespace {
+
+// Minimises γ over an LMI built by build_controller_lmi: the solution, or Error with the
+// solver's verdict (`what` names the LMI).
+sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, const IterationObserver& observer,
+                             const std::string& what) {
+  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings), Eigen::VectorXd(),
+                                                 staged(observer, SolveStage::Controller));
+  if (sol.status != sdp::Status::Solved)
+    throw Error(error_code_for(sol.status),
+                what + ": " + std::string(sdp::status_message(sol.status)) + (sol.detail.empty() ? "" : ": " + sol.detail));
+  return sol;
+}
+
+}  // namespace
 
 ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const hinf::Controller& K, double gamma,
                                          const ControllerDesign& design) {
@@ -186,29 +208,73 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   require_stabilisable_detectable(Ps);
   const ControllerLmi& C = S.lmi;
   require_memory(C.lmi, settings, "the controller LMI");
-  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings), Eigen::VectorXd(),
-                                                 staged(observer, SolveStage::Controller));
-  if (sol.status != sdp::Status::Solved)
-    throw Error(error_code_for(sol.status), "controller LMI (docs/maths.md (149)/(150)): " +
-                                                std::string(sdp::status_message(sol.status)) +
-                                                (sol.detail.empty() ? "" : ": " + sol.detail));
-  const ControllerPoint pt = controller_point(C, Ps, sol.x);
+  const sdp::Solution sol = minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))");
   ControllerSynthesisResult r;
-  double cond_N = 0;
-  r.controller = unscaled_controller(recover_controller(pt, Ps, &cond_N), sc);
-  r.gamma = pt.gamma * sc.gamma_factor();
-  r.certificate = certify_controller(P, r.controller, r.gamma, design);
-  r.certificate.cond_N = cond_N;
-  r.certificate.lmi_max_eigenvalue =
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(C.lmi.evaluate(sol.x), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
-  r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
+  r.newton_iterations = sol.newton_total;
+  r.time_s = sol.elapsed_s;
+  r.lmi_order = C.lmi.order();
+  r.variables = C.lmi.num_params();
+  const double gamma_star = C.lmi.value(C.g, sol.x)(0, 0);  // scaled units
+  if (design.pole_disk_radius) {  // γ* of the same problem without the disk, for comparison
+    ControllerDesign free = S.design;
+    free.pole_disk_radius.reset();
+    const ControllerLmi F = build_controller_lmi(Ps, free);
+    const sdp::Solution sf = minimize_gamma(F, settings, nullptr, "controller LMI without the pole disk");
+    r.gamma_without_disk = F.lmi.value(F.g, sf.x)(0, 0) * sc.gamma_factor();
+    r.newton_iterations += sf.newton_total;
+    r.time_s += sf.elapsed_s;
+  }
+  // The controller at the γ-optimal point, or — asked for (settings.gamma_backoff), or when
+  // the recovery there fails numerically (I − R S singular: the optimum is often reached
+  // only in the limit) — at the back-off point of (149a).
+  std::vector<double> backoffs;
+  if (settings.gamma_backoff > 0) backoffs = {settings.gamma_backoff};
+  else backoffs = {0.0, kAutomaticBackoffs[0], kAutomaticBackoffs[1], kAutomaticBackoffs[2]};
+  std::string why;
+  for (const double b : backoffs) {
+    ControllerPoint pt = controller_point(C, Ps, sol.x);
+    Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);
+    if (b > 0) {
+      const ControllerLmi B = build_controller_backoff_lmi(Ps, S.design, gamma_star * (1 + b));
+      sdp::Options options = solver_options(settings);  // the margin need only be near its maximum
+      options.relative_gap_tol = std::max(settings.relative_gap_tol, kBackoffRelativeGap);
+      const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
+                                                    staged(observer, SolveStage::Backoff));
+      r.newton_iterations += sb.newton_total;
+      r.time_s += sb.elapsed_s;
+      if (sb.status != sdp::Status::Solved) {
+        why = "gamma back-off (docs/maths.md (149a)): maximising the LMI margin at gamma = " +
+              fmt(*B.g_fixed * sc.gamma_factor()) + " failed: " + std::string(sdp::status_message(sb.status)) +
+              (sb.detail.empty() ? "" : ": " + sb.detail);
+        continue;
+      }
+      pt = controller_point(B, Ps, sb.x);
+      lmi_at_point = B.lmi.evaluate(sb.x);
+      r.gamma_optimal = gamma_star * sc.gamma_factor();
+      r.backoff = b;
+    }
+    double cond_N = 0;
+    try {
+      r.controller = unscaled_controller(recover_controller(pt, Ps, &cond_N), sc);
+    } catch (const Error& e) {
+      why = e.what();
+      continue;
+    }
+    r.gamma = pt.gamma * sc.gamma_factor();
+    r.certificate = certify_controller(P, r.controller, r.gamma, design);
+    r.certificate.cond_N = cond_N;
+    r.certificate.lmi_max_eigenvalue =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+    r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
+    // only numerical failures are retried further out; a robust channel that fails is a property
+    if (r.certificate.passed || (r.certificate.stable && !r.certificate.robustly_stable)) break;
+    why = "the certificate failed";
+  }
+  if (r.controller.A_K.size() == 0 && P.n() > 0) throw Error(ErrorCode::NumericalFailure, why);
   // What is certified is the closed loop's norm (its certified upper value): γ is never
   // written below it, even within the recovery's slack kNormSlack.
   if (r.certificate.passed) r.gamma = std::max(r.gamma, r.certificate.closed_loop_hinf_norm);
-  r.newton_iterations = sol.newton_total;
-  r.lmi_order = C.lmi.order();
-  r.variables = C.lmi.num_params();
-  r.time_s = sol.elapsed_s;
+  const double cond_N = r.certificate.cond_N;
   const ControllerCertificate& c = r.certificate;
   if (!c.robustly_stable && c.stable && c.poles_in_disk && c.lmi_max_eigenvalue < 0 &&
       c.closed_loop_hinf_norm <= r.gamma * (1 + kNormSlack))

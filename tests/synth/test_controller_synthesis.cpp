@@ -154,6 +154,8 @@ TEST(ControllerSynthesis, PoleDiskConfinesTheClosedLoop) {
     EXPECT_LT(poles.cwiseAbs().maxCoeff(), r) << "r = " << r;
     EXPECT_GE(disk.gamma, dgkf_gamma(P) * (1 - 1e-9)) << "r = " << r;
     EXPECT_LT(disk.certificate.cond_N, free.certificate.cond_N / 100) << "r = " << r;
+    ASSERT_TRUE(disk.gamma_without_disk.has_value());  // the unconstrained γ*, reported beside
+    EXPECT_NEAR(*disk.gamma_without_disk / dgkf_gamma(P), 1.0, 1e-6) << "r = " << r;
     expect_certified(P, disk);
   }
   EXPECT_GT(free.certificate.max_pole_modulus, 1e6);  // what the disk cures
@@ -169,6 +171,21 @@ TEST(ControllerSynthesis, RandomPlantsMatchDgkf) {
     const double reference = dgkf_gamma(P);
     const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt, std::nullopt});
     EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "trial " << trial;
+    expect_certified(P, r);
+  }
+}
+
+// The range n = 2 … 8, two controls and two measurements (random A: unstable in
+// general), each γ against the DGKF γ-iteration.
+TEST(ControllerSynthesis, RandomPlantsTwoToEightStatesMatchDgkf) {
+  std::mt19937 g(11);
+  for (int n = 2; n <= 8; ++n) {
+    const MatrixXd A = hinf::test::random_matrix(g, n, n);
+    const GeneralisedPlant P = normalised_plant(A, hinf::test::random_matrix(g, n, 2), hinf::test::random_matrix(g, n, 2),
+                                                hinf::test::random_matrix(g, 2, n), hinf::test::random_matrix(g, 2, n));
+    const double reference = dgkf_gamma(P);
+    const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {false, std::nullopt, std::nullopt});
+    EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6) << "n = " << n << ", reference " << reference;
     expect_certified(P, r);
   }
 }
@@ -190,6 +207,52 @@ TEST(ControllerSynthesis, TumblingHoldDesignMatchesDgkf) {
   const double reference = dgkf_gamma(N);
   const auto r = hinf::synth::synthesize_controller(cfg.plant, hinf::synth::Settings(), cfg.design);
   EXPECT_NEAR(r.gamma / reference, 1.0, 1e-6);
+  expect_certified(cfg.plant, r);
+}
+
+// The physical model `model: tumbling_hold` (configs/tumbling-hold.yaml without its disk) is
+// the hand-written design plant of tests/data/controllers/tumbling-hold-design.yaml.
+TEST(ControllerSynthesis, TumblingHoldModelIsTheHandWrittenPlant) {
+  const auto read = [](const std::string& path) {
+    return hinf::synth::parse_controller_config(hinf::synth::read_config_bytes(std::string(HINF_SOURCE_DIR) + path), path);
+  };
+  const auto model = read("/configs/tumbling-hold.yaml");
+  const auto hand = read("/tests/data/controllers/tumbling-hold-design.yaml");
+  for (const auto& [a, b] : {std::pair{&model.plant.A, &hand.plant.A}, {&model.plant.B1, &hand.plant.B1},
+                             {&model.plant.B2, &hand.plant.B2}, {&model.plant.C1, &hand.plant.C1},
+                             {&model.plant.C2, &hand.plant.C2}, {&model.plant.D12, &hand.plant.D12},
+                             {&model.plant.D21, &hand.plant.D21}}) {
+    ASSERT_EQ(a->rows(), b->rows());
+    ASSERT_EQ(a->cols(), b->cols());
+    EXPECT_LE((*a - *b).cwiseAbs().maxCoeff(), 1e-18);
+  }
+  ASSERT_TRUE(model.design.pole_disk_radius.has_value());
+  EXPECT_EQ(*model.design.pole_disk_radius, 2.0);
+  ASSERT_TRUE(model.design.robust.has_value());
+}
+
+// The γ back-off (docs/maths.md (149a)) on seed 004's plant: γ = (1 + b) γ* with γ* the DGKF
+// optimum, certified, and the recovery well conditioned (the γ-optimal one: cond(N) 7.5e4, a
+// pole near −1.8e5 rad/s).
+TEST(ControllerSynthesis, GammaBackoffConditionsTheController) {
+  auto cfg = hinf::synth::parse_controller_config(
+      hinf::synth::read_config_bytes(std::string(HINF_SOURCE_DIR) + "/tests/data/controllers/tumbling-hold-design.yaml"),
+      "tumbling-hold-design.yaml");
+  GeneralisedPlant N = cfg.plant;  // the DGKF normalisation, as above
+  N.B2 /= 0.8;
+  N.D12 /= 0.8;
+  N.C2 /= 0.01;
+  N.D21 /= 0.01;
+  const double reference = dgkf_gamma(N);
+  const auto optimal = hinf::synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+  EXPECT_GT(optimal.certificate.cond_N, 1e4);
+  cfg.settings.gamma_backoff = 0.05;
+  const auto r = hinf::synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+  ASSERT_TRUE(r.gamma_optimal.has_value());
+  EXPECT_NEAR(*r.gamma_optimal / reference, 1.0, 1e-6);
+  EXPECT_NEAR(r.gamma / (1.05 * reference), 1.0, 1e-6);
+  EXPECT_LT(r.certificate.cond_N, 100.0);
+  EXPECT_LT(r.certificate.max_pole_modulus, 10.0);
   expect_certified(cfg.plant, r);
 }
 

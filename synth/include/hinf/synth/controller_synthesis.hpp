@@ -55,6 +55,14 @@ struct ControllerCertificate {
 struct ControllerSynthesisResult {
   hinf::Controller controller;
   double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ (the LMI's γ, or the closed loop's certified norm if larger)
+  // With settings.gamma_backoff > 0: the LMI's optimum γ* before the back-off (the solver's
+  // value; the controller written is the back-off's, at (1 + b) γ*).
+  std::optional<double> gamma_optimal;
+  double backoff = 0;  // b of that back-off: settings.gamma_backoff, or the automatic one
+                       // (1e-7, 1e-5, 1e-3 in turn) when I − R S is singular at the optimum
+  // With a pole disk: the LMI's optimum without it (the solver's value, for comparison; no
+  // controller is recovered there).
+  std::optional<double> gamma_without_disk;
   ControllerCertificate certificate;
   int newton_iterations = 0;
   int lmi_order = 0, variables = 0;
@@ -62,7 +70,10 @@ struct ControllerSynthesisResult {
 };
 
 // Minimises γ over the LMI (149) (continuous) or (150) (discrete), with the disk (153) if
-// asked; D_K = 0 when strictly proper. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
+// asked; D_K = 0 when strictly proper. With settings.gamma_backoff = b > 0 the controller is
+// recovered at γ_b = (1 + b) γ*, at the point of the LMI's largest margin (149a): a far
+// better-conditioned recovery (cond(N) 7.5e4 → 39 on seed 004's plant at b = 0.05) for a
+// slightly larger γ. Error(InvalidInput) on inconsistent dimensions or non-finite entries,
 // Error(Infeasible) if the LMI has no solution, Error(NumericalFailure) if the solver or
 // the certificate fails (nothing is returned that the certificate has not passed).
 // `observer` (may be empty) hears the solver's progress, as synthesize's does.
