@@ -36,9 +36,14 @@ int solve_controller(const synth::ControllerConfig& cfg, const std::string& outp
     std::cout << "gamma back-off" << (cfg.settings.gamma_backoff > 0 ? "" : " (automatic: I - R S is singular at the optimum)")
               << ": the LMI's optimum is " << num(*r.gamma_optimal) << "; the controller is recovered at (1 + "
               << num(r.backoff) << ") times it, at the point of largest LMI margin (docs/maths.md (149a))\n";
-  if (r.gamma_without_disk)
+  if (r.gamma_without_disk && !r.robust_synthesis)
     std::cout << "pole disk: without it the LMI's optimum is " << num(*r.gamma_without_disk) << " (+"
               << num(100 * (r.gamma / *r.gamma_without_disk - 1)) << " % for the disk)\n";
+  if (r.robust_synthesis)
+    std::cout << "robust synthesis (docs/maths.md (160a)): the H-infinity-optimal controller had ‖T_qp‖∞ = "
+              << num(*r.nominal_robust_channel_norm) << " >= 1; this one is designed for ‖T_qp‖∞ < 1 (D-scaling d = "
+              << num(r.robust_scaling) << "; the least ‖T_qp‖∞ of any controller is about "
+              << num(*r.least_robust_channel_norm) << ")\n";
   if (r.certificate.robust_channel_norm)
     std::cout << "robust channel: ‖T_qp‖∞ = " << num(*r.certificate.robust_channel_norm)
               << " < 1: stable for every perturbation H F E with ‖F‖ <= 1 (small gain)\n";

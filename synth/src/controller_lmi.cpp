@@ -11,46 +11,53 @@ using Eigen::MatrixXd;
 
 namespace {
 
-// −γ I on diagonal block b (size k): the variable g, or the back-off's fixed γ.
-void add_minus_gamma_identity(ControllerLmi& C, int b, int k) {
-  if (C.g_fixed) C.lmi.add_constant(b, b, -*C.g_fixed * MatrixXd::Identity(k, k));
+// −γ I on diagonal block b (size k): the variable g, the back-off's fixed γ, or `fixed`.
+void add_minus_gamma_identity(ControllerLmi& C, int b, int k, const double* fixed = nullptr) {
+  if (fixed) C.lmi.add_constant(b, b, -*fixed * MatrixXd::Identity(k, k));
+  else if (C.g_fixed) C.lmi.add_constant(b, b, -*C.g_fixed * MatrixXd::Identity(k, k));
   else C.lmi.add_scalar_term(b, b, C.g, -MatrixXd::Identity(k, k));
 }
 
-// The continuous-time bounded-real LMI in the new variables (docs/maths.md (149)), M ≺ 0:
+// The continuous-time bounded-real LMI in the new variables (docs/maths.md (149)), M ≺ 0,
+// on the four diagonal blocks from `o` (γ the variable g, or `gamma` when given):
 //   [ AS+SAᵀ+B2Ĉ+ĈᵀB2ᵀ   Âᵀ+A+B2D̂C2         B1+B2D̂D21    SC1ᵀ+ĈᵀD12ᵀ         ]
 //   [ ∗                  RA+AᵀR+B̂C2+C2ᵀB̂ᵀ   RB1+B̂D21     C1ᵀ+C2ᵀD̂ᵀD12ᵀ        ]
 //   [ ∗                  ∗                  −γI           D11ᵀ+D21ᵀD̂ᵀD12ᵀ     ]
 //   [ ∗                  ∗                  ∗             −γI                 ]
-// and −[S I; I R] ≺ 0 as two more diagonal blocks.
-void continuous_blocks(const hinf::GeneralisedPlant& P, ControllerLmi& C) {
+void continuous_bounded_real(const hinf::GeneralisedPlant& P, ControllerLmi& C, int o, const double* gamma = nullptr) {
   auto& M = C.lmi;
   const int n = P.n();
   const MatrixXd In = MatrixXd::Identity(n, n);
-  M.add_term(0, 0, C.S, P.A, In, false, /*symmetrize=*/true);
-  M.add_term(0, 0, C.Chat, P.B2, In, false, true);
-  M.add_term(0, 1, C.Ahat, In, In, /*transpose=*/true);
-  M.add_constant(0, 1, P.A);
-  M.add_constant(0, 2, P.B1);
-  M.add_term(0, 3, C.S, In, P.C1.transpose());
-  M.add_term(0, 3, C.Chat, In, P.D12.transpose(), true);
-  M.add_term(1, 1, C.R, In, P.A, false, true);
-  M.add_term(1, 1, C.Bhat, In, P.C2, false, true);
-  M.add_term(1, 2, C.R, In, P.B1);
-  M.add_term(1, 2, C.Bhat, In, P.D21);
-  M.add_constant(1, 3, P.C1.transpose());
-  add_minus_gamma_identity(C, 2, P.nw());
-  M.add_constant(2, 3, P.D11.transpose());
-  add_minus_gamma_identity(C, 3, P.nz());
+  M.add_term(o, o, C.S, P.A, In, false, /*symmetrize=*/true);
+  M.add_term(o, o, C.Chat, P.B2, In, false, true);
+  M.add_term(o, o + 1, C.Ahat, In, In, /*transpose=*/true);
+  M.add_constant(o, o + 1, P.A);
+  M.add_constant(o, o + 2, P.B1);
+  M.add_term(o, o + 3, C.S, In, P.C1.transpose());
+  M.add_term(o, o + 3, C.Chat, In, P.D12.transpose(), true);
+  M.add_term(o + 1, o + 1, C.R, In, P.A, false, true);
+  M.add_term(o + 1, o + 1, C.Bhat, In, P.C2, false, true);
+  M.add_term(o + 1, o + 2, C.R, In, P.B1);
+  M.add_term(o + 1, o + 2, C.Bhat, In, P.D21);
+  M.add_constant(o + 1, o + 3, P.C1.transpose());
+  add_minus_gamma_identity(C, o + 2, P.nw(), gamma);
+  M.add_constant(o + 2, o + 3, P.D11.transpose());
+  add_minus_gamma_identity(C, o + 3, P.nz(), gamma);
   if (C.Dhat) {
-    M.add_term(0, 1, *C.Dhat, P.B2, P.C2);
-    M.add_term(0, 2, *C.Dhat, P.B2, P.D21);
-    M.add_term(1, 3, *C.Dhat, P.C2.transpose(), P.D12.transpose(), true);
-    M.add_term(2, 3, *C.Dhat, P.D21.transpose(), P.D12.transpose(), true);
+    M.add_term(o, o + 1, *C.Dhat, P.B2, P.C2);
+    M.add_term(o, o + 2, *C.Dhat, P.B2, P.D21);
+    M.add_term(o + 1, o + 3, *C.Dhat, P.C2.transpose(), P.D12.transpose(), true);
+    M.add_term(o + 2, o + 3, *C.Dhat, P.D21.transpose(), P.D12.transpose(), true);
   }
-  M.add_term(4, 4, C.S, -In, In);
-  M.add_constant(4, 5, -In);
-  M.add_term(5, 5, C.R, -In, In);
+}
+
+// (149) on blocks 0–3, and −[S I; I R] ≺ 0 as blocks 4, 5.
+void continuous_blocks(const hinf::GeneralisedPlant& P, ControllerLmi& C) {
+  continuous_bounded_real(P, C, 0);
+  const MatrixXd In = MatrixXd::Identity(P.n(), P.n());
+  C.lmi.add_term(4, 4, C.S, -In, In);
+  C.lmi.add_constant(4, 5, -In);
+  C.lmi.add_term(5, 5, C.R, -In, In);
 }
 
 // The discrete-time LMI (docs/maths.md (150)) as M ≺ 0, M the negative of
@@ -117,13 +124,17 @@ void pole_disk_blocks(const hinf::GeneralisedPlant& P, double r, int first, Cont
 
 namespace {
 
-ControllerLmi build(const hinf::GeneralisedPlant& P, const ControllerDesign& design, std::optional<double> g_fixed) {
+ControllerLmi build(const hinf::GeneralisedPlant& P, const ControllerDesign& design, std::optional<double> g_fixed,
+                    const hinf::UncertaintyChannel* robust = nullptr) {
   const int n = P.n();
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
   std::vector<int> blocks = discrete ? std::vector<int>{n, n, n, n, P.nw(), P.nz()}
                                      : std::vector<int>{n, n, P.nw(), P.nz(), n, n};
   const int disk_first = static_cast<int>(blocks.size());
   if (design.pole_disk_radius) blocks.insert(blocks.end(), {n, n, n, n});
+  const int robust_first = static_cast<int>(blocks.size());
+  if (robust)
+    blocks.insert(blocks.end(), {n, n, static_cast<int>(robust->H.cols()), static_cast<int>(robust->E.rows())});
   ControllerLmi C;
   C.lmi = lmi::LmiProblem(blocks);
   C.g_fixed = g_fixed;
@@ -138,6 +149,10 @@ ControllerLmi build(const hinf::GeneralisedPlant& P, const ControllerDesign& des
   if (discrete) discrete_blocks(P, C);
   else continuous_blocks(P, C);
   if (design.pole_disk_radius) pole_disk_blocks(P, *design.pole_disk_radius, disk_first, C);
+  if (robust) {  // ‖T_qp‖∞ < 1 with the same variables (docs/maths.md (160a))
+    const double one = 1;
+    continuous_bounded_real(robust_channel_plant(P, *robust), C, robust_first, &one);
+  }
   if (g_fixed)  // every diagonal block ≺ t I: minimising t maximises the LMI's margin
     for (int b = 0; b < C.lmi.num_blocks(); ++b)
       C.lmi.add_scalar_term(b, b, *C.t, -MatrixXd::Identity(C.lmi.block_size(b), C.lmi.block_size(b)));
@@ -151,8 +166,23 @@ ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const Contro
 }
 
 ControllerLmi build_controller_backoff_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
-                                           double g_fixed) {
-  return build(P, design, g_fixed);
+                                           double g_fixed, const hinf::UncertaintyChannel* robust) {
+  return build(P, design, g_fixed, robust);
+}
+
+ControllerLmi build_robust_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
+                                          const hinf::UncertaintyChannel& robust) {
+  return build(P, design, std::nullopt, &robust);
+}
+
+hinf::GeneralisedPlant robust_channel_plant(const hinf::GeneralisedPlant& P, const hinf::UncertaintyChannel& c) {
+  hinf::GeneralisedPlant Q = P;
+  Q.B1 = c.H;
+  Q.C1 = c.E;
+  Q.D11 = MatrixXd::Zero(c.E.rows(), c.H.cols());
+  Q.D12 = MatrixXd::Zero(c.E.rows(), P.nu());
+  Q.D21 = MatrixXd::Zero(P.ny(), c.H.cols());
+  return Q;
 }
 
 ControllerPoint controller_point(const ControllerLmi& C, const hinf::GeneralisedPlant& P, const Eigen::VectorXd& x) {

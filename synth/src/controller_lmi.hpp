@@ -27,7 +27,17 @@ ControllerLmi build_controller_lmi(const hinf::GeneralisedPlant& P, const Contro
 // The γ back-off (docs/maths.md (149a)): the same LMI at the fixed γ = g_fixed with every
 // diagonal block ≺ t I; minimise t (the point of largest margin, as for the filters, §6).
 ControllerLmi build_controller_backoff_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
-                                           double g_fixed);
+                                           double g_fixed, const hinf::UncertaintyChannel* robust = nullptr);
+
+// Robust synthesis (docs/maths.md (160a), continuous time): (149) with four more blocks, the
+// bounded-real LMI of the channel p → q (robust_channel_plant) at γ = 1 in the same
+// variables — a controller with ‖T_zw‖∞ < γ and ‖T_qp‖∞ < 1 (one Lyapunov function for both).
+ControllerLmi build_robust_controller_lmi(const hinf::GeneralisedPlant& P, const ControllerDesign& design,
+                                          const hinf::UncertaintyChannel& robust);
+
+// The plant of the channel p → q: B1 = H, C1 = E, D11 = D12 = D21 = 0 (its γ-optimal
+// controller minimises ‖T_qp‖∞, docs/maths.md (160a)).
+hinf::GeneralisedPlant robust_channel_plant(const hinf::GeneralisedPlant& P, const hinf::UncertaintyChannel& channel);
 
 // The change of variables' values at a solution x of the LMI.
 struct ControllerPoint {

@@ -70,6 +70,13 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
     kv(out, "gamma_backoff", r.backoff);
   }
   if (r.gamma_without_disk) kv(out, "gamma_without_disk", *r.gamma_without_disk);  // the LMI's optimum without (153)
+  if (r.robust_synthesis) {  // docs/maths.md (160a)
+    out << YAML::Key << "robust_synthesis" << YAML::Value << YAML::BeginMap;
+    kv(out, "nominal_robust_channel_hinf_norm", *r.nominal_robust_channel_norm);
+    kv(out, "least_robust_channel_hinf_norm", *r.least_robust_channel_norm);
+    kv(out, "d_scaling", r.robust_scaling);
+    out << YAML::EndMap;
+  }
   kv(out, "bound", std::string("gamma bounds the ") + (discrete ? "l2" : "L2") +
                        " gain from w to z of the closed loop (the H-infinity norm of T_zw, docs/maths.md (147))");
   out << YAML::Key << "controller" << YAML::Value << YAML::BeginMap;

@@ -13,6 +13,7 @@
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/lmi/sdpa_format.hpp"
+#include "hinf/sdp/dual_bound.hpp"
 #include "hinf/sdp/path_following.hpp"
 #include "pipeline.hpp"
 
@@ -25,6 +26,10 @@ namespace {
 constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3};
 // The back-off's margin is maximised to this relative gap (as the filters', docs/maths.md §6).
 constexpr double kBackoffRelativeGap = 1e-3;
+// The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
+// 1e3, then golden sections within a decade of the best.
+constexpr double kLogDLow = -6, kLogDHigh = 3;
+constexpr int kGoldenSteps = 8;
 // The closed-loop norm may exceed the solver's γ by this much (the recovery's round-off).
 constexpr double kNormSlack = 1e-6;
 // Relative accuracy of the closed-loop norm.
@@ -156,8 +161,10 @@ namespace {
 // Minimises γ over an LMI built by build_controller_lmi: the solution, or Error with the
 // solver's verdict (`what` names the LMI).
 sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, const IterationObserver& observer,
-                             const std::string& what) {
-  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), solver_options(settings), Eigen::VectorXd(),
+                             const std::string& what, double relative_gap_tol = 0) {
+  sdp::Options options = solver_options(settings);
+  options.relative_gap_tol = std::max(options.relative_gap_tol, relative_gap_tol);
+  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), options, Eigen::VectorXd(),
                                                  staged(observer, SolveStage::Controller));
   if (sol.status != sdp::Status::Solved)
     throw Error(error_code_for(sol.status),
@@ -194,52 +201,45 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
   return c;
 }
 
-ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P, const Settings& settings,
-                                                const ControllerDesign& design, const IterationObserver& observer) {
-  check_dimensions(P);
-  settings.validate();
-  if (design.pole_disk_radius && !(*design.pole_disk_radius > 0 && std::isfinite(*design.pole_disk_radius)))
-    throw Error(ErrorCode::InvalidInput, "controller.pole_disk_radius = " + fmt(*design.pole_disk_radius) +
-                                             ": must be positive and finite", "pole_disk_radius");
-  // solved on the equilibrated plant (docs/maths.md (154)), mapped back exactly
-  const ScaledControllerLmi S = scaled_controller_lmi(P, design);
-  const ControllerScaling& sc = S.scaling;
-  const hinf::GeneralisedPlant& Ps = S.plant;
-  require_stabilisable_detectable(Ps);
-  const ControllerLmi& C = S.lmi;
-  require_memory(C.lmi, settings, "the controller LMI");
-  const sdp::Solution sol = minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))");
-  ControllerSynthesisResult r;
-  r.newton_iterations = sol.newton_total;
-  r.time_s = sol.elapsed_s;
-  r.lmi_order = C.lmi.order();
-  r.variables = C.lmi.num_params();
+namespace {
+
+// What one synthesis shares between its solves.
+struct SynthesisContext {
+  const hinf::GeneralisedPlant& P;  // the user's plant
+  const ScaledControllerLmi& S;     // the equilibrated plant and design
+  const ControllerDesign& design;   // the user's design (the certificate's)
+  const Settings& settings;
+  const IterationObserver& observer;
+};
+
+// The channel in the equilibrated units: H̃ = D⁻¹ H / ω, Ẽ = E D (‖T_qp‖∞ unchanged).
+hinf::UncertaintyChannel scaled_channel(const hinf::UncertaintyChannel& c, const ControllerScaling& s) {
+  return {s.state.cwiseInverse().asDiagonal() * c.H / s.time, c.E * s.state.asDiagonal()};
+}
+
+// The controller of LMI C (minimising γ, solution sol) recovered and certified into r: at
+// the γ-optimal point, or — asked for (settings.gamma_backoff), or when the recovery there
+// fails numerically (I − R S singular: the optimum is often reached only in the limit) — at
+// the back-off point of (149a). False (and `why`) if no attempt gave a controller.
+bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
+                       const hinf::UncertaintyChannel* channel, ControllerSynthesisResult& r, std::string& why) {
+  const ControllerScaling& sc = x.S.scaling;
+  const hinf::GeneralisedPlant& Ps = x.S.plant;
   const double gamma_star = C.lmi.value(C.g, sol.x)(0, 0);  // scaled units
-  if (design.pole_disk_radius) {  // γ* of the same problem without the disk, for comparison
-    ControllerDesign free = S.design;
-    free.pole_disk_radius.reset();
-    const ControllerLmi F = build_controller_lmi(Ps, free);
-    const sdp::Solution sf = minimize_gamma(F, settings, nullptr, "controller LMI without the pole disk");
-    r.gamma_without_disk = F.lmi.value(F.g, sf.x)(0, 0) * sc.gamma_factor();
-    r.newton_iterations += sf.newton_total;
-    r.time_s += sf.elapsed_s;
-  }
-  // The controller at the γ-optimal point, or — asked for (settings.gamma_backoff), or when
-  // the recovery there fails numerically (I − R S singular: the optimum is often reached
-  // only in the limit) — at the back-off point of (149a).
   std::vector<double> backoffs;
-  if (settings.gamma_backoff > 0) backoffs = {settings.gamma_backoff};
+  if (x.settings.gamma_backoff > 0) backoffs = {x.settings.gamma_backoff};
   else backoffs = {0.0, kAutomaticBackoffs[0], kAutomaticBackoffs[1], kAutomaticBackoffs[2]};
-  std::string why;
   for (const double b : backoffs) {
     ControllerPoint pt = controller_point(C, Ps, sol.x);
     Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);
+    r.gamma_optimal.reset();
+    r.backoff = 0;
     if (b > 0) {
-      const ControllerLmi B = build_controller_backoff_lmi(Ps, S.design, gamma_star * (1 + b));
-      sdp::Options options = solver_options(settings);  // the margin need only be near its maximum
-      options.relative_gap_tol = std::max(settings.relative_gap_tol, kBackoffRelativeGap);
+      const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
+      sdp::Options options = solver_options(x.settings);  // the margin need only be near its maximum
+      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kBackoffRelativeGap);
       const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
-                                                    staged(observer, SolveStage::Backoff));
+                                                    staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
       r.time_s += sb.elapsed_s;
       if (sb.status != sdp::Status::Solved) {
@@ -261,35 +261,161 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
       continue;
     }
     r.gamma = pt.gamma * sc.gamma_factor();
-    r.certificate = certify_controller(P, r.controller, r.gamma, design);
+    r.certificate = certify_controller(x.P, r.controller, r.gamma, x.design);
     r.certificate.cond_N = cond_N;
     r.certificate.lmi_max_eigenvalue =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
     r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
     // only numerical failures are retried further out; a robust channel that fails is a property
-    if (r.certificate.passed || (r.certificate.stable && !r.certificate.robustly_stable)) break;
+    if (r.certificate.passed || (r.certificate.stable && !r.certificate.robustly_stable)) return true;
     why = "the certificate failed";
   }
-  if (r.controller.A_K.size() == 0 && P.n() > 0) throw Error(ErrorCode::NumericalFailure, why);
+  return r.controller.A_K.size() > 0;
+}
+
+// When the nominal controller fails the small-gain test (docs/maths.md (160a)): the least
+// ‖T_qp‖∞ any controller achieves (Error Infeasible if a verified dual bound puts it ≥ 1),
+// then the controller of (149) with ‖T_qp‖∞ < 1 imposed in the same variables.
+void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
+  const hinf::UncertaintyChannel channel = scaled_channel(*x.design.robust, x.S.scaling);
+  ControllerDesign free = x.S.design;
+  free.pole_disk_radius.reset();
+  const ControllerLmi Q = build_controller_lmi(robust_channel_plant(x.S.plant, channel), free);
+  // to 1e-3 only: without noise in y this problem is singular, its infimum approached at the
+  // end of the path
+  const sdp::Solution sq = minimize_gamma(Q, x.settings, x.observer, "the robust channel's LMI (docs/maths.md (160a))",
+                                          kBackoffRelativeGap);
+  r.newton_iterations += sq.newton_total;
+  r.time_s += sq.elapsed_s;
+  r.least_robust_channel_norm = Q.lmi.value(Q.g, sq.x)(0, 0);
+  if (*r.least_robust_channel_norm >= 1) {  // to full accuracy, for a verified dual bound
+    sdp::Solution full;
+    try {
+      full = minimize_gamma(Q, x.settings, x.observer, "the robust channel's LMI (docs/maths.md (160a))");
+    } catch (const Error&) {
+      full = sq;  // the end game of a singular problem: the bound below says whether it holds
+    }
+    const sdp::DualBound bound = sdp::verified_bracket(Q.lmi, Q.lmi.cost_of(Q.g), full.x, x.settings.lmi_margin, {},
+                                                      full.centred_path);
+    const std::string common = "robust channel (docs/maths.md (160a)): no controller makes ‖T_qp‖∞ < 1";
+    if (bound.verified && bound.lower_bound >= 1)
+      throw Error(ErrorCode::Infeasible, "infeasible: " + common + ": every controller has ‖T_qp‖∞ >= " +
+                                             fmt(bound.lower_bound) + " (verified dual bound; the LMI's optimum is " +
+                                             fmt(*r.least_robust_channel_norm) +
+                                             "), so small gain cannot prove robust stability for this uncertainty; "
+                                             "reduce it (robust:) or model it more finely", "robust");
+    throw Error(ErrorCode::CheckFailed,
+                "robust channel (docs/maths.md (160a)): no controller with ‖T_qp‖∞ < 1 was found: the least ‖T_qp‖∞ the "
+                "LMI reaches is " + fmt(*r.least_robust_channel_norm) + " (not verified as a lower bound: " +
+                    bound.detail + "); no controller written", "robust");
+  }
+  // The scalar D-scaling (p d, q / d) changes nothing in ‖T_qp‖∞ but much in the one
+  // Lyapunov function (160a) must share: γ over log10 d, a grid of decades then golden
+  // sections around the best (seed 004 at ten times its uncertainty: γ = 2622 at d = 1,
+  // 0.098 at d = 1e-3).
+  const auto solve_at = [&](double log_d, sdp::Solution* out) {
+    hinf::UncertaintyChannel scaled = channel;
+    scaled.H *= std::pow(10.0, log_d);
+    scaled.E /= std::pow(10.0, log_d);
+    const ControllerLmi M = build_robust_controller_lmi(x.S.plant, x.S.design, scaled);
+    sdp::Solution sm = sdp::minimize_linear(M.lmi, M.lmi.cost_of(M.g), solver_options(x.settings), Eigen::VectorXd(),
+                                            staged(x.observer, SolveStage::Controller));
+    r.newton_iterations += sm.newton_total;
+    r.time_s += sm.elapsed_s;
+    const double g = sm.status == sdp::Status::Solved ? M.lmi.value(M.g, sm.x)(0, 0) : INFINITY;
+    if (out) *out = std::move(sm);
+    return g;
+  };
+  double best = 0, best_gamma = INFINITY;
+  for (double log_d = kLogDLow; log_d <= kLogDHigh; log_d += 1) {
+    const double g = solve_at(log_d, nullptr);
+    if (g < best_gamma) best_gamma = g, best = log_d;
+  }
+  if (!std::isfinite(best_gamma))  // not a theorem: the method, not the problem, has failed
+    throw Error(ErrorCode::CheckFailed, "robust channel (docs/maths.md (160a)): no D-scaling d in [1e" +
+                                           fmt(kLogDLow) + ", 1e" + fmt(kLogDHigh) +
+                                           "] made the combined LMI solvable (one Lyapunov function for the "
+                                           "performance and ‖T_qp‖∞ < 1: conservative), although the least ‖T_qp‖∞ "
+                                           "of any controller is about " + fmt(*r.least_robust_channel_norm) +
+                                           "; no controller written (this is not a proof that none exists)", "robust");
+  double lo = best - 1, hi = best + 1;  // golden sections on γ(log10 d)
+  const double phi = (std::sqrt(5.0) - 1) / 2;
+  double a1 = hi - phi * (hi - lo), a2 = lo + phi * (hi - lo);
+  double g1 = solve_at(a1, nullptr), g2 = solve_at(a2, nullptr);
+  for (int i = 0; i < kGoldenSteps; ++i) {
+    if (g1 <= g2) hi = a2, a2 = a1, g2 = g1, a1 = hi - phi * (hi - lo), g1 = solve_at(a1, nullptr);
+    else lo = a1, a1 = a2, g1 = g2, a2 = lo + phi * (hi - lo), g2 = solve_at(a2, nullptr);
+  }
+  if (std::min(g1, g2) < best_gamma) best = g1 <= g2 ? a1 : a2;
+  sdp::Solution sm;
+  solve_at(best, &sm);
+  hinf::UncertaintyChannel scaled = channel;
+  scaled.H *= std::pow(10.0, best);
+  scaled.E /= std::pow(10.0, best);
+  const ControllerLmi M = build_robust_controller_lmi(x.S.plant, x.S.design, scaled);
+  r.lmi_order = M.lmi.order();
+  r.variables = M.lmi.num_params();
+  r.robust_scaling = std::pow(10.0, best);
+  r.robust_synthesis = true;
+  std::string why;
+  if (!recover_certified(x, M, sm, &scaled, r, why)) throw Error(ErrorCode::NumericalFailure, why);
+}
+
+}  // namespace
+
+ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P, const Settings& settings,
+                                                const ControllerDesign& design, const IterationObserver& observer) {
+  check_dimensions(P);
+  settings.validate();
+  if (design.pole_disk_radius && !(*design.pole_disk_radius > 0 && std::isfinite(*design.pole_disk_radius)))
+    throw Error(ErrorCode::InvalidInput, "controller.pole_disk_radius = " + fmt(*design.pole_disk_radius) +
+                                             ": must be positive and finite", "pole_disk_radius");
+  // solved on the equilibrated plant (docs/maths.md (154)), mapped back exactly
+  const ScaledControllerLmi S = scaled_controller_lmi(P, design);
+  const SynthesisContext x{P, S, design, settings, observer};
+  require_stabilisable_detectable(S.plant);
+  const ControllerLmi& C = S.lmi;
+  require_memory(C.lmi, settings, "the controller LMI");
+  const sdp::Solution sol = minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))");
+  ControllerSynthesisResult r;
+  r.newton_iterations = sol.newton_total;
+  r.time_s = sol.elapsed_s;
+  r.lmi_order = C.lmi.order();
+  r.variables = C.lmi.num_params();
+  if (design.pole_disk_radius) {  // γ* of the same problem without the disk, for comparison
+    ControllerDesign free = S.design;
+    free.pole_disk_radius.reset();
+    const ControllerLmi F = build_controller_lmi(S.plant, free);
+    const sdp::Solution sf = minimize_gamma(F, settings, nullptr, "controller LMI without the pole disk");
+    r.gamma_without_disk = F.lmi.value(F.g, sf.x)(0, 0) * S.scaling.gamma_factor();
+    r.newton_iterations += sf.newton_total;
+    r.time_s += sf.elapsed_s;
+  }
+  std::string why;
+  if (!recover_certified(x, C, sol, nullptr, r, why)) throw Error(ErrorCode::NumericalFailure, why);
+  const bool discrete = P.time == hinf::TimeDomain::Discrete;
+  if (design.robust && r.certificate.stable && !r.certificate.robustly_stable) {
+    if (discrete)
+      throw Error(ErrorCode::CheckFailed,
+                  "robust channel (docs/maths.md (160)): the H-infinity-optimal controller (gamma = " + fmt(r.gamma) +
+                      ") has ‖T_qp‖∞ = " + fmt(*r.certificate.robust_channel_norm) +
+                      " >= 1, and the robust synthesis (160a) is for continuous-time designs; no controller written",
+                  "robust");
+    r.nominal_robust_channel_norm = r.certificate.robust_channel_norm;
+    robust_design(x, r);
+  }
   // What is certified is the closed loop's norm (its certified upper value): γ is never
   // written below it, even within the recovery's slack kNormSlack.
   if (r.certificate.passed) r.gamma = std::max(r.gamma, r.certificate.closed_loop_hinf_norm);
-  const double cond_N = r.certificate.cond_N;
-  const ControllerCertificate& c = r.certificate;
-  if (!c.robustly_stable && c.stable && c.poles_in_disk && c.lmi_max_eigenvalue < 0 &&
-      c.closed_loop_hinf_norm <= r.gamma * (1 + kNormSlack))
-    throw Error(ErrorCode::CheckFailed,
-                "robust channel (docs/maths.md (160)): the H-infinity-optimal controller (gamma = " + fmt(r.gamma) +
-                    ") has ‖T_qp‖∞ = " + fmt(*c.robust_channel_norm) +
-                    " >= 1: small gain does not prove robust stability for this uncertainty; no controller written",
-                "robust");
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "controller certificate failed: closed loop " + std::string(r.certificate.stable ? "stable" : "unstable") +
                     (r.certificate.poles_in_disk ? "" : ", a pole outside the disk (|lambda| = " +
                                                             fmt(r.certificate.max_pole_modulus) + ")") +
+                    (r.certificate.robustly_stable ? "" : ", ‖T_qp‖∞ = " + fmt(*r.certificate.robust_channel_norm) + " >= 1") +
                     ", ‖T_zw‖∞ = " + fmt(r.certificate.closed_loop_hinf_norm) + " against γ = " + fmt(r.gamma) +
-                    ", LMI's largest eigenvalue " + fmt(r.certificate.lmi_max_eigenvalue) + ", cond(N) = " + fmt(cond_N));
+                    ", LMI's largest eigenvalue " + fmt(r.certificate.lmi_max_eigenvalue) +
+                    ", cond(N) = " + fmt(r.certificate.cond_N));
   return r;
 }
 

@@ -256,6 +256,30 @@ TEST(ControllerSynthesis, GammaBackoffConditionsTheController) {
   expect_certified(cfg.plant, r);
 }
 
+// Seed 004 with ten times its rate uncertainty (tests/data/controllers/robust-10x.yaml): the
+// H∞-optimal controller fails the small-gain test, the robust design (160a) passes it. ‖T_qp‖∞
+// recomputed here from the controller and the channel (H, E).
+TEST(ControllerSynthesis, RobustDesignPassesSmallGainWhereTheOptimalControllerFails) {
+  const auto cfg = hinf::synth::parse_controller_config(
+      hinf::synth::read_config_bytes(std::string(HINF_SOURCE_DIR) + "/tests/data/controllers/robust-10x.yaml"),
+      "robust-10x.yaml");
+  const auto r = hinf::synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+  ASSERT_TRUE(r.robust_synthesis);
+  EXPECT_GE(*r.nominal_robust_channel_norm, 1.0);
+  const hinf::StateSpace cl = hinf::closed_loop(cfg.plant, r.controller);
+  const auto n = cfg.plant.n(), ncl = static_cast<int>(cl.A.rows());
+  hinf::StateSpace t;
+  t.A = cl.A;
+  t.B = MatrixXd::Zero(ncl, cfg.design.robust->H.cols());
+  t.B.topRows(n) = cfg.design.robust->H;
+  t.C = MatrixXd::Zero(cfg.design.robust->E.rows(), ncl);
+  t.C.leftCols(n) = cfg.design.robust->E;
+  t.D = MatrixXd::Zero(t.C.rows(), t.B.cols());
+  EXPECT_LT(hinf::certify::continuous_hinf_norm(t).norm, 1.0);
+  EXPECT_GE(r.gamma, *r.gamma_without_disk);
+  expect_certified(cfg.plant, r);
+}
+
 // ---------------------------------------------------------------- discrete: filtering
 // The filter plant (docs/maths.md (1)–(3), no uncertainty) as a generalised plant whose
 // controller is the filter: x(k+1) = A x + [B 0] w, z = L x − u, y = C x + [0 D] w.

@@ -45,7 +45,7 @@ ControllerFile parse_controller_yaml(const std::string& text, const std::string&
     reader.fail(root["format"], "format: unsupported format '" + reader.word(root["format"], "format") +
                                     "', expected '" + kFormat + "'");
   const YamlMap top = reader.map(root, "", {"format", "tool", "config_sha256", "time", "sample_time", "dimensions",
-                                            "gamma", "gamma_optimal", "gamma_backoff", "gamma_without_disk", "bound", "controller", "closed_loop_poles", "certificate",
+                                            "gamma", "gamma_optimal", "gamma_backoff", "gamma_without_disk", "robust_synthesis", "bound", "controller", "closed_loop_poles", "certificate",
                                             "solver", "timing"});
   top.required("format", std::string("expected 'format: ") + kFormat + "'");
   if (top.word("format") != kFormat)

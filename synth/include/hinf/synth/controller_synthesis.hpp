@@ -63,6 +63,12 @@ struct ControllerSynthesisResult {
   // With a pole disk: the LMI's optimum without it (the solver's value, for comparison; no
   // controller is recovered there).
   std::optional<double> gamma_without_disk;
+  // With a robust channel that the H∞-optimal controller fails (‖T_qp‖∞ ≥ 1, its value here):
+  // the least ‖T_qp‖∞ any controller achieves (the LMI's optimum), and the controller written
+  // is then the robust design of docs/maths.md (160a).
+  std::optional<double> nominal_robust_channel_norm, least_robust_channel_norm;
+  bool robust_synthesis = false;
+  double robust_scaling = 1;  // the D-scaling d of the robust design (p d, q / d)
   ControllerCertificate certificate;
   int newton_iterations = 0;
   int lmi_order = 0, variables = 0;
