@@ -22,8 +22,8 @@ namespace hinf::synth {
 namespace {
 
 // When the γ-optimal point does not give a controller (I − R S numerically singular, or a
-// certificate lost to round-off), the back-offs (149a) tried in turn.
-constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3};
+// certificate lost to round-off), the back-offs (149a) tried in turn (the γ written says which).
+constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3, 1e-2, 5e-2};
 // The back-off's margin is maximised to this relative gap (as the filters', docs/maths.md §6).
 constexpr double kBackoffRelativeGap = 1e-3;
 // The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
@@ -226,9 +226,9 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
   const ControllerScaling& sc = x.S.scaling;
   const hinf::GeneralisedPlant& Ps = x.S.plant;
   const double gamma_star = C.lmi.value(C.g, sol.x)(0, 0);  // scaled units
-  std::vector<double> backoffs;
+  std::vector<double> backoffs{0.0};  // the optimum, then the automatic back-offs
+  backoffs.insert(backoffs.end(), std::begin(kAutomaticBackoffs), std::end(kAutomaticBackoffs));
   if (x.settings.gamma_backoff > 0) backoffs = {x.settings.gamma_backoff};
-  else backoffs = {0.0, kAutomaticBackoffs[0], kAutomaticBackoffs[1], kAutomaticBackoffs[2]};
   for (const double b : backoffs) {
     ControllerPoint pt = controller_point(C, Ps, sol.x);
     Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);

@@ -59,7 +59,7 @@ struct ControllerSynthesisResult {
   // value; the controller written is the back-off's, at (1 + b) γ*).
   std::optional<double> gamma_optimal;
   double backoff = 0;  // b of that back-off: settings.gamma_backoff, or the automatic one
-                       // (1e-7, 1e-5, 1e-3 in turn) when I − R S is singular at the optimum
+                       // (1e-7, 1e-5, 1e-3, 1e-2, 5e-2 in turn) when I − R S is singular at the optimum
   // With a pole disk: the LMI's optimum without it (the solver's value, for comparison; no
   // controller is recovered there).
   std::optional<double> gamma_without_disk;
