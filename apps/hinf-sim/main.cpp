@@ -117,11 +117,7 @@ void write_outputs(const Options& o, const hinf::sim::RunSetup& setup, const std
                    const std::vector<std::pair<std::string, std::string>>& gains_files) {
   using namespace hinf::sim;
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(o.out_dir, ec);
-  if (ec || !fs::is_directory(o.out_dir))
-    throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                      "cannot create the output directory '" + o.out_dir + "': " + ec.message());
+  hinf::sim_cli::create_output_directory(o.out_dir);
   const Trajectory& trajectory = *results.front().trajectory;
   hinf::AtomicFileSet outputs;
   outputs.protect(o.scenario_path);
@@ -192,6 +188,13 @@ int run(int argc, char** argv) {
 }  // namespace
 
 namespace hinf::sim_cli {
+
+void create_output_directory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw hinf::Error(hinf::ErrorCode::InvalidInput, "cannot create the output directory '" + dir + "': " + ec.message());
+}
 
 std::function<void(long, long)> progress_bar(bool enabled) {
   if (!enabled) return nullptr;

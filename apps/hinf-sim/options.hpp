@@ -16,6 +16,9 @@ struct Options {
   bool no_plots = false, quiet = false, verbose = false;
 };
 
+// Creates the run directory (and its parents): Error(InvalidInput) naming it if it cannot.
+void create_output_directory(const std::string& dir);
+
 // Monte-Carlo progress on stderr (a bar), or nothing.
 std::function<void(long, long)> progress_bar(bool enabled);
 

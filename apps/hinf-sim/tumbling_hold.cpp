@@ -59,11 +59,7 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
 void write_hold_outputs(const Options& o, const HoldSetup& setup, const std::vector<HoldRunResult>& results,
                         const HoldSummaryContext& context, const std::string& controller_yaml) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(o.out_dir, ec);
-  if (ec || !fs::is_directory(o.out_dir))
-    throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                      "cannot create the output directory '" + o.out_dir + "': " + ec.message());
+  hinf::sim_cli::create_output_directory(o.out_dir);
   const HoldTrajectory& tr = *results.front().trajectory;
   hinf::AtomicFileSet outputs;
   outputs.protect(o.scenario_path);

@@ -61,13 +61,8 @@ std::string format_hold_runs_csv(const std::vector<HoldRunResult>& runs) {
 
 std::string format_hold_summary_json(const HoldScenario& s, const std::vector<HoldRunResult>& runs,
                                      const HoldSummaryContext& ctx) {
-  Json j = Json::object();
-  j["format"] = "hinf-sim-summary/1";
+  Json j = summary_header(ctx.scenario_path, ctx.seed, runs.size(), s.duration);
   j["family"] = "tumbling_hold";
-  j["scenario"] = ctx.scenario_path;
-  j["seed"] = ctx.seed;
-  j["runs"] = runs.size();
-  j["duration_s"] = json_num(s.duration);
   j["control_sample_time_s"] = json_num(s.control_sample_time);
   j["integration_step_s"] = json_num(s.integration_step);
   j["modulator"] = to_string(s.modulator);

@@ -54,12 +54,7 @@ std::string format_runs_csv(const std::vector<RunResult>& runs) {
 
 std::string format_summary_json(const Scenario& s, const std::vector<RunResult>& runs, const SummaryContext& ctx) {
   const MetricSettings ms = s.metric_settings();
-  Json j = Json::object();
-  j["format"] = "hinf-sim-summary/1";
-  j["scenario"] = ctx.scenario_path;
-  j["seed"] = ctx.seed;
-  j["runs"] = runs.size();
-  j["duration_s"] = json_num(s.duration);
+  Json j = summary_header(ctx.scenario_path, ctx.seed, runs.size(), s.duration);
   j["sample_time_s"] = json_num(s.sample_time);
   j["truth_delta"] = json_num(s.truth_delta);
   j["steady_state_start_s"] = json_num(ms.steady_state_start_s);

@@ -3,6 +3,7 @@
 // non-finite, with {mean, std, min, max, count} over Monte-Carlo runs.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -39,6 +40,17 @@ inline Json json_stats(const std::vector<std::optional<double>>& values) {
   j["min"] = json_num(s.min);
   j["max"] = json_num(s.max);
   j["count"] = s.count;
+  return j;
+}
+
+// The keys every summary.json starts with.
+inline Json summary_header(const std::string& scenario_path, std::uint64_t seed, std::size_t runs, double duration) {
+  Json j = Json::object();
+  j["format"] = "hinf-sim-summary/1";
+  j["scenario"] = scenario_path;
+  j["seed"] = seed;
+  j["runs"] = runs;
+  j["duration_s"] = json_num(duration);
   return j;
 }
 
