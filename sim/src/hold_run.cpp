@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hinf/models/tumbling_hold.hpp"
 #include "hinf/runtime/lti_controller.hpp"
 #include "hinf/sim/hold_truth.hpp"
 #include "hinf/sim/rng.hpp"
@@ -146,7 +147,12 @@ HoldRunResult simulate_hold_run(const HoldSetup& setup, std::uint64_t run_seed, 
     Eigen::Vector3d U = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
     if (!last) {
       for (int i = 0; i < 3; ++i) e(i) = y(i) + s.measurement_sigma * camera.normal() - s.hold_point(i);
-      U = setup.feedforward + controller.step(e);
+      const Eigen::Vector3d U_star =
+          s.feedforward_from_target_rate
+              ? hinf::models::equilibrium_force(s.servicer_mass, y.segment<3>(10), truth.omega_dot(y.segment<3>(10)),
+                                                s.hold_point)
+              : setup.feedforward;
+      U = U_star + controller.step(e);
       if (U.cwiseAbs().maxCoeff() > s.thrusters.force) ++saturated;
       thrusters.command(k, U);
     }

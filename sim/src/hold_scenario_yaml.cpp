@@ -75,12 +75,19 @@ void read_control(const YamlMap& top, HoldScenario& s) {
   s.initial_offset = vector3(top, "initial_offset", s.initial_offset);
   s.initial_velocity = vector3(top, "initial_velocity", s.initial_velocity);
   if (top.has("measurement")) s.measurement_sigma = top.map("measurement", {"sigma"}).nonnegative("sigma", s.measurement_sigma);
-  // feedforward: true (at the target's initial rate), false, or the nominal rate it assumes
+  // feedforward: true (at the target's initial rate), false, the nominal rate it assumes, or
+  // {from: target_rate}
   s.nominal_rate = s.initial_rate;
   if (top.has("feedforward")) {
     const YAML::Node f = top.get("feedforward");
     if (f.IsMap()) {
-      const YamlMap m = top.map("feedforward", {"rate_deg_s", "accel_deg_s2"});
+      const YamlMap m = top.map("feedforward", {"rate_deg_s", "accel_deg_s2", "from"});
+      if (m.has("from")) {
+        m.choice("from", {"target_rate"});
+        for (const char* key : {"rate_deg_s", "accel_deg_s2"})
+          if (m.has(key)) m.fail(key, "not with from: target_rate (the rate is the target's, at each sample)");
+        s.feedforward_from_target_rate = true;
+      }
       s.nominal_rate = vector3(m, "rate_deg_s", s.nominal_rate / kRadiansPerDegree, kRadiansPerDegree);
       s.nominal_accel = vector3(m, "accel_deg_s2", s.nominal_accel, kRadiansPerDegree);
     } else {

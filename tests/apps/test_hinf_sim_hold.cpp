@@ -5,7 +5,8 @@
 //  - the acceptance figures, 10 Monte-Carlo runs: PWM steady RMS ≤ 1 cm per axis,
 //    maximum ≤ 3 cm, velocity RMS ≤ 2 mm/s, settled by 200 s, Δv ≤ 1.1 × the ideal
 //    actuator's, no pulse shorter than 40 ms; a true spin of 1.9 and 2.1 °/s (controller
-//    designed at 2 °/s) steady maximum ≤ 5 cm;
+//    designed at 2 °/s) steady maximum ≤ 5 cm, and the tumbling target with the feed-forward
+//    of its current rate;
 //  - invalid input: exit 2 naming the key, nothing written.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -178,6 +179,17 @@ TEST(HoldAcceptance, SpinOffNominalStaysWithinFiveCentimetres) {
   }
 }
 
+// The tumbling target (0.42 °/s off the design's spin) with the feed-forward of its current
+// rate: steady maximum ≤ 5 cm over 10 runs.
+TEST(HoldAcceptance, TumblingTargetWithScheduledFeedforward) {
+  const fs::path out = fresh_dir("tumbling");
+  ASSERT_EQ(run_scenario("tumbling-hold-tumbling", "--runs 10 --no-plots", out), 0);
+  const YAML::Node m = YAML::LoadFile((out / "summary.json").string())["metrics"];
+  EXPECT_LE(metric_max(m["position_max_m"]), 0.05);
+  EXPECT_EQ(m["position_max_m"]["count"].as<int>(), 10);
+  fs::remove_all(out);
+}
+
 // Invalid scenarios: exit 2, the message names the key, no output directory.
 TEST(HoldInvalid, Exit2NamesKeyWritesNothing) {
   const struct {
@@ -194,7 +206,9 @@ TEST(HoldInvalid, Exit2NamesKeyWritesNothing) {
                 "control_sample_time = 0.1005: must be a whole multiple of integration_step"},
                {"inertia: [1200, 1000, 800]", "inertia: [3000, 1000, 800]", "target.inertia: violates the triangle"},
                {"controller: {synthesize: ../tumbling-hold.yaml}", "controller: {file: missing.yaml}",
-                "controller.file: file '.*missing.yaml' does not exist"}};
+                "controller.file: file '.*missing.yaml' does not exist"},
+               {"feedforward: {rate_deg_s: [0, 0, 2]}", "feedforward: {from: target_rate, rate_deg_s: [0, 0, 2]}",
+                "feedforward.rate_deg_s: not with from: target_rate"}};
   const std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "tumbling-hold-pwm.yaml");
   int i = 0;
   for (const auto& c : cases) {

@@ -39,6 +39,9 @@ struct HoldScenario {
   double measurement_sigma = 0.01;   // camera position noise, m per axis
   // control
   bool feedforward = true;                      // U* of docs/maths.md (158)
+  // U* from the target's current ω, ω̇ at each control sample (feedforward: {from: target_rate}):
+  // the rate the camera's relative attitude gives, here the truth's; else from nominal_rate.
+  bool feedforward_from_target_rate = false;
   Eigen::Vector3d nominal_rate{0, 0, 2 * 3.14159265358979323846 / 180};  // ω₀ of U*, rad/s
   Eigen::Vector3d nominal_accel = Eigen::Vector3d::Zero();                 // ω̇₀ of U*, rad/s²
   ControllerSource controller;
