@@ -13,6 +13,7 @@
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/gps_ins.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
 #include "hinf/runtime/rekf.hpp"
@@ -179,6 +180,62 @@ TEST(Allocations, EkfAndRekfStepsDoNotAllocate) {
       not_ok += rekf.update(x.head<3>()) != FilterStatus::Ok;
     }
     n = s.count();
+  }
+  EXPECT_EQ(n, 0);
+  EXPECT_EQ(not_ok, 0);
+}
+
+// The 15-state GPS/INS model with its manifold hooks, a new epoch and new REKF uncertainty
+// matrices at every step (docs/maths.md §29): no allocation either.
+TEST(Allocations, GpsInsEkfAndRekfStepsDoNotAllocate) {
+  using namespace hinf::runtime;
+  using namespace hinf::models;
+  GpsInsParameters p;
+  p.orbit_rate = 1.101573e-3;
+  p.flyaround_rate = p.orbit_rate;
+  p.inertia = Eigen::Vector3d(1000, 1200, 900).asDiagonal();
+  p.baselines = {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(-2, 2, 0)};
+  constexpr int NZ = GpsInsMeasurement::NZ;
+  using Mat15 = Eigen::Matrix<double, 15, 15>;
+  const Eigen::Matrix<double, NZ, NZ> R = 1e-4 * Eigen::Matrix<double, NZ, NZ>::Identity();
+  Ekf<GpsInsProcess, GpsInsMeasurement> ekf(GpsInsProcess{p}, GpsInsMeasurement{p}, 1e-12 * Mat15::Identity(), R);
+  Rekf<GpsInsProcess, GpsInsMeasurement> rekf(GpsInsProcess{p}, GpsInsMeasurement{p}, 1e-12 * Mat15::Identity(), R,
+                                              1.0, Mat15::Zero(), Eigen::Matrix<double, NZ, NZ>::Zero(),
+                                              Mat15::Zero());
+  GpsInsEpoch e;
+  e.r_target = Eigen::Vector3d(6899807.0, 0, 0);
+  for (int j = 0; j < kGpsInsSatellites; ++j) e.r_satellite[j] = e.r_target + 2.0e7 * Eigen::Vector3d::Unit(j % 3);
+  e.r_satellite[3] = e.r_target + 2.0e7 * Eigen::Vector3d(1, 1, 1).normalized();
+  Eigen::Matrix<double, 15, 1> x = Eigen::Matrix<double, 15, 1>::Zero(), s;
+  x.head<3>() << 100, 0, -173.21;
+  s.setConstant(1.0);  // L = I: γ²I − LPLᵀ = 0.99 I at P0
+  ekf.init(x, Mat15::Identity() * 1e-2);
+  rekf.init(x, Mat15::Identity() * 1e-2);
+  GpsInsProcessNoise q;
+  q.accel_sigma = 1e-6;
+  q.inertia_uncertainty_fraction = 0.3;
+  long n = 0;
+  int not_ok = 0;
+  {
+    CountScope scope;
+    for (int k = 0; k < 200; ++k) {
+      e.R_FR = rotation_3(p.flyaround_rate * k);
+      e.R_RI = rotation_3(p.orbit_rate * k);
+      ekf.mutable_model().set_epoch(e);
+      rekf.mutable_model().set_epoch(e);
+      ekf.mutable_measurement().set_epoch(e);
+      rekf.mutable_measurement().set_epoch(e);
+      const auto u = gps_ins_rekf_uncertainty(rekf.model().continuous_jacobian(rekf.x()),
+                                              rekf.measurement().H(rekf.x()), s, 1.0, 0.1, 1e-3);
+      rekf.set_uncertainty(u.A, u.C, u.L);
+      rekf.set_Q(gps_ins_process_noise(p, q, Eigen::Vector3d(1e-3, 0, 0)));
+      not_ok += ekf.predict(Eigen::Vector3d::Zero()) != FilterStatus::Ok;
+      not_ok += rekf.predict(Eigen::Vector3d::Zero()) != RekfStatus::Ok;
+      const GpsInsMeasurement::Vector y = ekf.measurement().h(x);
+      not_ok += ekf.update(y) != FilterStatus::Ok;
+      not_ok += rekf.update(y) != RekfStatus::Ok;
+    }
+    n = scope.count();
   }
   EXPECT_EQ(n, 0);
   EXPECT_EQ(not_ok, 0);

@@ -13,19 +13,11 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "hinf/models/attitude.hpp"
 #include "hinf/models/discretise.hpp"
 #include "hinf/models/generalised_plant.hpp"
 
 namespace hinf::models {
-
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180;
-
-// [v×]: the matrix of the cross product, [v×] u = v × u.
-inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
 
 // K of (157): the stiffness of the rotating frame, ρ̈ = K ρ + 2W ρ̇ + F/m.
 inline Eigen::Matrix3d rotating_frame_stiffness(const Eigen::Vector3d& omega, const Eigen::Vector3d& omega_dot) {

@@ -20,15 +20,15 @@ namespace hinf::runtime::detail {
 //     S = H Pbar H^T + Rbar                        (symmetrised, Cholesky S = L L^T)
 //     NIS = nu^T S^-1 nu = |L^-1 nu|^2
 //     K = Pbar H^T S^-1  computed as  K^T = S^-1 (H Pbar)   (Pbar symmetric)
-//     x <- x + K nu
+//     x <- x + K nu                  (or the model's x ⊞ K nu: `correct`, kalman_core.hpp)
 //     P <- (I - K H) Pbar (I - K H)^T + K Rbar K^T      (Joseph form), symmetrised
 // On failure (S not PD, or NIS above gate) x and P are untouched.
-template <int NX, int NZ>
+template <int NX, int NZ, class Correct>
 FilterStatus joseph_update(Eigen::Matrix<double, NX, 1>& x, Eigen::Matrix<double, NX, NX>& P,
                            const Eigen::Matrix<double, NX, NX>& Pbar, const Eigen::Matrix<double, NZ, NX>& H,
                            const Eigen::Matrix<double, NZ, NZ>& Rbar, const Eigen::Matrix<double, NZ, 1>& nu,
                            double nis_gate, double& nis, Eigen::Matrix<double, NZ, NZ>& S,
-                           Eigen::Matrix<double, NX, NZ>& K) {
+                           Eigen::Matrix<double, NX, NZ>& K, Correct&& correct) {
   const Eigen::Matrix<double, NZ, NX> HP = H * Pbar;
   S.noalias() = HP * H.transpose();
   S += Rbar;
@@ -39,7 +39,7 @@ FilterStatus joseph_update(Eigen::Matrix<double, NX, 1>& x, Eigen::Matrix<double
   nis = llt.matrixL().solve(nu).squaredNorm();
   if (nis > nis_gate) return FilterStatus::InnovationRejected;
   K = llt.solve(HP).transpose();
-  x.noalias() += K * nu;
+  correct(x, K, nu);
   Eigen::Matrix<double, NX, NX> IKH = Eigen::Matrix<double, NX, NX>::Identity();
   IKH.noalias() -= K * H;
   const Eigen::Matrix<double, NX, NX> IKHP = IKH * Pbar;

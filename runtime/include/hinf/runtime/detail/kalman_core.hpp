@@ -5,6 +5,13 @@
 //     update:   ν = residual(y, h(x)),  Joseph update from P̄ with R̄  (joseph_update.hpp)
 // where the EKF passes P̄ = P, R̄ = R and the REKF P̄ = M(P), R̄ = γ²CCᵀ + R, extra = γ²AAᵀ.
 // Fixed sizes throughout: no heap allocation in a step.
+//
+// Manifold hooks (docs/maths.md (194), (195)). A model whose state is not a vector space may
+// provide either or both of
+//   State boxplus(const State& x, const State& dx) const;   the correction x ⊞ K ν
+//   void normalise(State& x, StateCov& P) const;            a chart switch after every step
+// (the state x then carries the estimate, P the covariance of its error Δx). Without them the
+// code is the additive update, unchanged: x ← x + K ν computed as before, bit for bit.
 #pragma once
 
 #include <Eigen/Dense>
@@ -12,12 +19,30 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "hinf/runtime/detail/covariance.hpp"
 #include "hinf/runtime/detail/joseph_update.hpp"
 #include "hinf/runtime/filter_status.hpp"
 
 namespace hinf::runtime::detail {
+
+template <class Model, class State, class = void>
+struct HasBoxplus : std::false_type {};
+template <class Model, class State>
+struct HasBoxplus<Model, State,
+                  std::void_t<decltype(std::declval<const Model&>().boxplus(std::declval<const State&>(),
+                                                                            std::declval<const State&>()))>>
+    : std::true_type {};
+
+template <class Model, class State, class Cov, class = void>
+struct HasNormalise : std::false_type {};
+template <class Model, class State, class Cov>
+struct HasNormalise<Model, State, Cov,
+                    std::void_t<decltype(std::declval<const Model&>().normalise(std::declval<State&>(),
+                                                                                std::declval<Cov&>()))>>
+    : std::true_type {};
 
 template <class Model, class Measurement>
 class KalmanCore {
@@ -75,6 +100,9 @@ class KalmanCore {
   double nis() const { return nis_; }              // nu^T S^-1 nu of the last update
   const Model& model() const { return model_; }
   const Measurement& measurement() const { return meas_; }
+  // For models with a time-varying context (e.g. the epoch's frames) set between steps.
+  Model& mutable_model() { return model_; }
+  Measurement& mutable_measurement() { return meas_; }
 
  protected:
   // Q PSD, R PD; throws std::invalid_argument naming `name` otherwise.
@@ -108,6 +136,7 @@ class KalmanCore {
     P_ += Q_;
     symmetrise(P_);
     x_ = x_next;
+    normalise();
     return apply_covariance_policy<NX>(P_, P0_, policy_);
   }
 
@@ -124,9 +153,22 @@ class KalmanCore {
   FilterStatus finish_update(const Observation& y, const Observation& y_pred, const MeasurementJacobian& H,
                              const StateCov& Pbar, const ObsCov& Rbar) {
     nu_ = meas_.residual(y, y_pred);
-    const FilterStatus s = joseph_update<NX, NZ>(x_, P_, Pbar, H, Rbar, nu_, nis_gate_, nis_, S_, K_);
+    const FilterStatus s = joseph_update<NX, NZ>(x_, P_, Pbar, H, Rbar, nu_, nis_gate_, nis_, S_, K_,
+                                                 [this](State& x, const Gain& K, const Observation& nu) {
+                                                   if constexpr (HasBoxplus<Model, State>::value) {
+                                                     const State dx = K * nu;
+                                                     x = model_.boxplus(x, dx);
+                                                   } else {
+                                                     x.noalias() += K * nu;
+                                                   }
+                                                 });
     if (s != FilterStatus::Ok) return s;
+    normalise();
     return apply_covariance_policy<NX>(P_, P0_, policy_);
+  }
+
+  void normalise() {
+    if constexpr (HasNormalise<Model, State, StateCov>::value) model_.normalise(x_, P_);
   }
 
   Model model_;
