@@ -25,8 +25,10 @@ Eigen::Matrix3d rotation(std::mt19937& g) {
 }
 
 // Rates far above the fly-around's (n ≈ 1e-3) so that every coupling term is visible.
-GpsInsParameters fast_parameters(GpsInsJacobian jac, double dt) {
+GpsInsParameters fast_parameters(GpsInsJacobian jac, double dt,
+                                 GpsInsPropagation propagation = GpsInsPropagation::Exact) {
   GpsInsParameters p;
+  p.propagation = propagation;
   p.orbit_rate = 0.03;
   p.flyaround_rate = 0.02;
   p.sample_time = dt;
@@ -79,12 +81,17 @@ TEST(GpsInsModel, BoxplusAndBoxminusAreInverse) {
   }
 }
 
-// C2: Φ = I + F Δt against central differences of the Euler step f in error coordinates
-// (Δt = 1 ms, so the O(Δt²) difference between I + FΔt and the step's Jacobian is < 1e-7).
-TEST(GpsInsModel, ProcessJacobianMatchesCentralDifferences) {
+// C2: Φ against central differences of the step f in error coordinates, for the Euler step
+// (188) with Φ = I + FΔt and for the RK4/CW step (188a) with its third-order Φ (Δt = 1 ms, so
+// the O(Δt²) difference between I + FΔt and the Euler step's Jacobian is < 1e-7).
+class GpsInsPropagationTest : public ::testing::TestWithParam<GpsInsPropagation> {};
+INSTANTIATE_TEST_SUITE_P(Both, GpsInsPropagationTest,
+                         ::testing::Values(GpsInsPropagation::Exact, GpsInsPropagation::Euler));
+
+TEST_P(GpsInsPropagationTest, ProcessJacobianMatchesCentralDifferences) {
   std::mt19937 g(2);
-  GpsInsProcess full(fast_parameters(GpsInsJacobian::Full, 1e-3));
-  GpsInsProcess paper(fast_parameters(GpsInsJacobian::Paper, 1e-3));
+  GpsInsProcess full(fast_parameters(GpsInsJacobian::Full, 1e-3, GetParam()));
+  GpsInsProcess paper(fast_parameters(GpsInsJacobian::Paper, 1e-3, GetParam()));
   double worst_full = 0, least_paper = 1e300;
   for (int i = 0; i < 100; ++i) {
     const GpsInsEpoch e = random_epoch(g);
@@ -196,7 +203,8 @@ TEST(GpsInsModel, RateEquationIsTheDerivativeOfTheTruth) {
   }
 }
 
-// The CW part of f is the paper's (10); in closed form the drift-free circle keeps |ρ| = 200 m.
+// The CW part of f is the paper's (10); in closed form the drift-free circle keeps |ρ| = 200 m,
+// and the exact step moves along it.
 TEST(GpsInsModel, TranslationIsTheCwMatrix) {
   GpsInsParameters p = fast_parameters(GpsInsJacobian::Full, 1.0);
   p.orbit_rate = 1.101573e-3;
@@ -212,6 +220,12 @@ TEST(GpsInsModel, TranslationIsTheCwMatrix) {
       std::sqrt(3.0) / 2 * r * n * n * std::cos(n * t);
   EXPECT_LE((A * s - s_dot).norm(), 1e-15 * r);
   EXPECT_NEAR(s.head<3>().norm(), r, 1e-12);
+  // exp(F_ρ Δt) carries the closed form from t to t + Δt
+  const double T = p.sample_time;
+  Eigen::Matrix<double, 6, 1> s1;
+  s1 << r / 2 * std::cos(n * (t + T)), -r * std::sin(n * (t + T)), -std::sqrt(3.0) / 2 * r * std::cos(n * (t + T)),
+      -r / 2 * n * std::sin(n * (t + T)), -r * n * std::cos(n * (t + T)), std::sqrt(3.0) / 2 * r * n * std::sin(n * (t + T));
+  EXPECT_LE((model.translation_transition() * s - s1).norm(), 1e-12 * r);
 }
 
 // The shadow-set switch leaves R(σ) unchanged, so the body-frame error of any nearby state
@@ -273,7 +287,9 @@ TEST(GpsInsModel, ProcessNoiseAndRekfUncertaintyHaveTheDocumentedBlocks) {
   const auto u = gps_ins_rekf_uncertainty(model.continuous_jacobian(x), meas.H(x), s, 2.0, 0.1, 1e-3);
   EXPECT_EQ(u.A.topRows(6).norm(), 0.0);
   EXPECT_LE((u.A.bottomRows<9>() - 0.1 * 2.0 * model.continuous_jacobian(x).bottomRows<9>() * 2.0).norm(), 1e-15);
-  EXPECT_EQ(u.L, Mat15::Identity() * 0.5);
+  State L_diag = State::Zero();
+  L_diag.segment<6>(ix::kAttitude).setConstant(0.5);  // σ and ω only
+  EXPECT_EQ(u.L, Mat15(L_diag.asDiagonal()));
   const auto H = meas.H(x);
   EXPECT_LE((u.C * u.C.transpose() - 1e-6 * 4 * H * H.transpose()).norm(), 1e-12 * (H * H.transpose()).norm());
 }

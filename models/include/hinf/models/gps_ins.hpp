@@ -33,6 +33,11 @@ constexpr int kPosition = 0, kVelocity = 3, kAttitude = 6, kRate = 9, kBias = 12
 // which drop −[(Ω+ν)×] in F_ω, the Δσ coupling of ω̇ and the gyro's 4[(Ω+ν)×] (§29.4).
 enum class GpsInsJacobian { Full, Paper };
 
+// `exact`: the CW translation by its transition matrix, (σ, ω) by one RK4 step with the frames
+// turning inside it, Φ = I + FΔt + (FΔt)²/2 + (FΔt)³/6 (docs/maths.md (188a)); `euler`: the
+// source's Euler step (188) and Φ = I + FΔt (191).
+enum class GpsInsPropagation { Exact, Euler };
+
 // The known geometry at the epoch t_k (docs/maths.md §29.2).
 struct GpsInsEpoch {
   Eigen::Matrix3d R_FR = Eigen::Matrix3d::Identity();  // fly-around frame F from LVLH R
@@ -50,6 +55,7 @@ struct GpsInsParameters {
   // b12 = a2 − a1, b13 = a3 − a1, b23 = a3 − a2 in B, m
   std::array<Eigen::Vector3d, kGpsInsBaselines> baselines{};
   GpsInsJacobian jacobian = GpsInsJacobian::Full;
+  GpsInsPropagation propagation = GpsInsPropagation::Exact;
 
   // Throws std::invalid_argument naming the field.
   void validate() const {
@@ -112,6 +118,14 @@ class GpsInsProcess {
   explicit GpsInsProcess(const GpsInsParameters& p) : p_(p) {
     p_.validate();
     J_inv_ = p_.inertia.inverse();
+    // exp(F_ρ Δt) by its Taylor series (‖F_ρ Δt‖ ≪ 1: n Δt ≈ 1e-3 in the fly-around)
+    const Eigen::Matrix<double, 6, 6> A = p_.sample_time * translation_matrix();
+    Eigen::Matrix<double, 6, 6> term = Eigen::Matrix<double, 6, 6>::Identity();
+    translation_transition_ = term;
+    for (int k = 1; k <= 30 && term.norm() > 0; ++k) {
+      term = term * A / k;
+      translation_transition_ += term;
+    }
   }
 
   void set_epoch(const GpsInsEpoch& e) { epoch_ = e; }
@@ -121,28 +135,47 @@ class GpsInsProcess {
   // ω̇ of the model, docs/maths.md (189):
   //   ω̇ = J⁻¹[T_c − ω_BI × J ω_BI] − (Ω + ν) × ω + Ω × ν
   Eigen::Vector3d rate_derivative(const State& x, const Input& T_c) const {
-    const Eigen::Vector3d w = x.segment<3>(gps_ins_index::kRate);
-    const GpsInsRates r = gps_ins_rates(p_, epoch_, x.segment<3>(gps_ins_index::kAttitude), w);
-    return J_inv_ * (T_c - r.omega_BI.cross(p_.inertia * r.omega_BI)) - (r.Omega + r.nu).cross(w) +
-           r.Omega.cross(r.nu);
+    return rate_derivative(x.segment<3>(gps_ins_index::kAttitude), x.segment<3>(gps_ins_index::kRate), T_c,
+                           epoch_.R_FR);
   }
 
-  // One Euler step of Δt, docs/maths.md (188)–(189): the CW translation, σ ← σ + M(σ) ω Δt,
-  // ω ← ω + ω̇ Δt, b constant.
+  // One step of Δt, docs/maths.md (188)–(189), (188a); b constant.
   State f(const State& x, const Input& T_c) const {
     using namespace gps_ins_index;
     const double dt = p_.sample_time;
     State out = x;
-    out.head<6>() += dt * (translation_matrix() * x.head<6>());
-    out.segment<3>(kAttitude) += dt * (mrp_kinematics(x.segment<3>(kAttitude)) * x.segment<3>(kRate));
-    out.segment<3>(kRate) += dt * rate_derivative(x, T_c);
+    const Eigen::Vector3d s = x.segment<3>(kAttitude), w = x.segment<3>(kRate);
+    if (p_.propagation == GpsInsPropagation::Euler) {
+      out.head<6>() += dt * (translation_matrix() * x.head<6>());
+      out.segment<3>(kAttitude) += dt * (mrp_kinematics(s) * w);
+      out.segment<3>(kRate) += dt * rate_derivative(s, w, T_c, epoch_.R_FR);
+      return out;
+    }
+    out.head<6>() = translation_transition_ * x.head<6>();
+    // RK4 of (183), (189) with R_FR(t + τ) = R3(n_f τ) R_FR(t)
+    const Eigen::Matrix3d R_half = rotation_3(p_.flyaround_rate * dt / 2) * epoch_.R_FR;
+    const Eigen::Matrix3d R_end = rotation_3(p_.flyaround_rate * dt) * epoch_.R_FR;
+    const Eigen::Vector3d s1 = mrp_kinematics(s) * w, w1 = rate_derivative(s, w, T_c, epoch_.R_FR);
+    const Eigen::Vector3d sa = s + dt / 2 * s1, wa = w + dt / 2 * w1;
+    const Eigen::Vector3d s2 = mrp_kinematics(sa) * wa, w2 = rate_derivative(sa, wa, T_c, R_half);
+    const Eigen::Vector3d sb = s + dt / 2 * s2, wb = w + dt / 2 * w2;
+    const Eigen::Vector3d s3 = mrp_kinematics(sb) * wb, w3 = rate_derivative(sb, wb, T_c, R_half);
+    const Eigen::Vector3d sc = s + dt * s3, wc = w + dt * w3;
+    const Eigen::Vector3d s4 = mrp_kinematics(sc) * wc, w4 = rate_derivative(sc, wc, T_c, R_end);
+    out.segment<3>(kAttitude) = s + dt / 6 * (s1 + 2 * s2 + 2 * s3 + s4);
+    out.segment<3>(kRate) = w + dt / 6 * (w1 + 2 * w2 + 2 * w3 + w4);
     return out;
   }
 
-  // Φ = I + F Δt, docs/maths.md (191).
+  // Φ = I + F Δt (191), or with the (FΔt)²/2 + (FΔt)³/6 terms for `exact` (188a).
   Jacobian F(const State& x, const Input& /*T_c*/) const {
-    Jacobian Phi = Jacobian::Identity();
-    Phi.noalias() += p_.sample_time * continuous_jacobian(x);
+    const Jacobian A = p_.sample_time * continuous_jacobian(x);
+    Jacobian Phi = Jacobian::Identity() + A;
+    if (p_.propagation == GpsInsPropagation::Exact) {
+      const Jacobian A2 = A * A;
+      Phi += 0.5 * A2;
+      Phi.noalias() += A2 * A / 6;
+    }
     return Phi;
   }
 
@@ -181,6 +214,8 @@ class GpsInsProcess {
     return A;
   }
 
+  const Eigen::Matrix<double, 6, 6>& translation_transition() const { return translation_transition_; }
+
   // The manifold hooks of runtime/ekf.hpp.
   State boxplus(const State& x, const State& dx) const { return gps_ins_boxplus(x, dx); }
   // The shadow-set switch (195). R(σ) is unchanged, so the body-frame error Δσ is too: its
@@ -190,8 +225,18 @@ class GpsInsProcess {
   }
 
  private:
+  Eigen::Vector3d rate_derivative(const Eigen::Vector3d& sigma, const Eigen::Vector3d& w, const Input& T_c,
+                                  const Eigen::Matrix3d& R_FR) const {
+    const Eigen::Matrix3d R_BF = mrp_to_dcm(sigma);
+    const Eigen::Vector3d Omega = R_BF * Eigen::Vector3d(0, 0, p_.flyaround_rate);
+    const Eigen::Vector3d nu = R_BF * (R_FR * Eigen::Vector3d(0, 0, p_.orbit_rate));
+    const Eigen::Vector3d w_BI = w + Omega + nu;
+    return J_inv_ * (T_c - w_BI.cross(p_.inertia * w_BI)) - (Omega + nu).cross(w) + Omega.cross(nu);
+  }
+
   GpsInsParameters p_;
   Eigen::Matrix3d J_inv_;
+  Eigen::Matrix<double, 6, 6> translation_transition_;
   GpsInsEpoch epoch_;
 };
 
@@ -312,7 +357,7 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_process_noise(const GpsInsParameter
 
 // The REKF's uncertainty of docs/maths.md (197) ("Jacobian fraction"), with s the per-state
 // scale (s = scale_factor × the initial 1σ):
-//   L = diag(1/s),  A_k = κ_A Δt F_nl diag(s)  (F_nl: F with its ρ, ρ̇ rows zeroed),
+//   L = diag(1/s) on the σ and ω blocks (zero on ρ, ρ̇, b),  A_k = κ_A Δt F_nl diag(s)  (F_nl: F with its ρ, ρ̇ rows zeroed),
 //   C_k = κ_C H_k diag(s)  (19 × 15, passed to the runtime as the square factor [C_k 0]).
 struct GpsInsRekfUncertainty {
   Eigen::Matrix<double, 15, 15> A, L;
@@ -327,7 +372,11 @@ inline GpsInsRekfUncertainty gps_ins_rekf_uncertainty(const Eigen::Matrix<double
   Eigen::Matrix<double, 15, 15> F_nl = F_continuous;
   F_nl.topRows<6>().setZero();
   u.A = kappa_A * dt * F_nl * scale.asDiagonal();
-  u.L = scale.cwiseInverse().asDiagonal();
+  // L only on Δσ and Δω: F_nl's only non-zero columns (the rate equation's error depends on
+  // the attitude and the rate, not on ρ, ρ̇ or b; an L on the slowly observed b, or on the
+  // unobservable split of ω and b, would make γ²I − LPLᵀ fail within a few steps)
+  u.L.setZero();
+  for (int i = gps_ins_index::kAttitude; i < gps_ins_index::kBias; ++i) u.L(i, i) = 1 / scale(i);
   u.C.setZero();
   u.C.leftCols<15>() = kappa_C * H * scale.asDiagonal();
   return u;
