@@ -1,4 +1,5 @@
-// libFuzzer harness: the scenario reader (sim/) on arbitrary bytes; see fuzz_config.cpp for
+// libFuzzer harness: the scenario readers (sim/: the Hill family and gps_ins_relative) on
+// arbitrary bytes; see fuzz_config.cpp for
 // what counts as a finding. Paths named in a scenario resolve against the working
 // directory and are only tested for existence.
 #include <cstddef>
@@ -6,12 +7,17 @@
 #include <string>
 
 #include "hinf/common/error.hpp"
+#include "hinf/sim/gps_ins_scenario_yaml.hpp"
+#include "hinf/sim/hold_scenario_yaml.hpp"
 #include "hinf/sim/scenario_yaml.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    hinf::sim::parse_scenario(text, "fuzz.yaml");
+    if (hinf::sim::scenario_family(text, "fuzz.yaml") == "gps_ins_relative")
+      hinf::sim::parse_gps_ins_scenario(text, "fuzz.yaml");
+    else
+      hinf::sim::parse_scenario(text, "fuzz.yaml");
   } catch (const hinf::Error&) {
   }
   return 0;

@@ -143,9 +143,11 @@ int run(int argc, char** argv) {
   }
 
   using namespace hinf::sim;
-  try {  // the scenario family: `scenario: tumbling_hold`, or the Hill experiments
+  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, or the Hill experiments
     const std::string text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
-    if (scenario_family(text, o.scenario_path) == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
+    const std::string family = scenario_family(text, o.scenario_path);
+    if (family == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
+    if (family == "gps_ins_relative") return hinf::sim_cli::run_gps_ins(o, text);
   } catch (const hinf::Error& e) {
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());

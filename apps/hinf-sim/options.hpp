@@ -25,4 +25,7 @@ std::function<void(long, long)> progress_bar(bool enabled);
 // A `scenario: tumbling_hold` run (docs/experiments.md "Seed 004"): its exit code.
 int run_tumbling_hold(const Options& o, const std::string& scenario_text);
 
+// A `scenario: gps_ins_relative` run (docs/experiments.md "Seed 003"): its exit code.
+int run_gps_ins(const Options& o, const std::string& scenario_text);
+
 }  // namespace hinf::sim_cli

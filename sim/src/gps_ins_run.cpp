@@ -47,6 +47,7 @@ class FilterRunner {
  public:
   FilterRunner(const GpsInsScenario& s, const GpsInsFilterSettings& f, const State& x0, const Mat15& P0)
       : settings_(f), params_(s.model_parameters(f.jacobian)), scale_(f.scale_factor * P0.diagonal().cwiseSqrt()) {
+    params_.propagation = f.propagation;
     noise_.accel_sigma = s.accel_sigma;
     noise_.torque_sigma = s.torque_sigma;
     noise_.bias_walk_sigma = s.gyro_bias_walk_sigma;

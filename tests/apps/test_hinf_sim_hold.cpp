@@ -23,62 +23,14 @@
 #include <string>
 #include <vector>
 
+#include "sim_cli_test.hpp"
+
 namespace fs = std::filesystem;
+using namespace sim_cli_test;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("hinf_sim_hold_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
-
-// Runs hinf-sim on configs/scenarios/NAME.yaml with ARGS into a fresh directory; its exit code.
-int run_scenario(const std::string& name, const std::string& args, const fs::path& out) {
-  const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / (name + ".yaml");
-  const fs::path log = out.string() + ".log";
-  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " " +
-                          args + " --quiet > " + log.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  if (rc != 0) std::cerr << slurp(log);
-  fs::remove(log);
-  return rc;
-}
-
-struct Columns {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::size_t col(const std::string& name) const {
-    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-  }
-};
-
-Columns read_csv(const fs::path& p) {
-  Columns c;
-  std::ifstream in(p);
-  std::string line;
-  std::getline(in, line);
-  std::stringstream hs(line);
-  for (std::string h; std::getline(hs, h, ',');) c.header.push_back(h);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream ls(line);
-    for (std::string v; std::getline(ls, v, ',');) row.push_back(std::strtod(v.c_str(), nullptr));
-    c.rows.push_back(row);
-  }
-  return c;
-}
-
-double metric_max(const YAML::Node& m) { return m.IsMap() ? m["max"].as<double>() : m.as<double>(); }
-double metric_mean(const YAML::Node& m) { return m.IsMap() ? m["mean"].as<double>() : m.as<double>(); }
+fs::path fresh_dir(const std::string& name) { return sim_cli_test::fresh_dir("hold", name); }
 
 std::vector<std::string> hold_scenarios() {
   std::vector<std::string> v;

@@ -21,6 +21,7 @@ struct GpsInsFilterSettings {
   std::string name = "ekf";
   GpsInsFilterKind kind = GpsInsFilterKind::Ekf;
   models::GpsInsJacobian jacobian = models::GpsInsJacobian::Full;
+  models::GpsInsPropagation propagation = models::GpsInsPropagation::Exact;
   double inertia_uncertainty_fraction = 0;  // p_f of (196)
   bool zoh_process_noise = false;
   // REKF (197)

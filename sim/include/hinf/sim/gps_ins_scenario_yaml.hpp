@@ -1,0 +1,27 @@
+// Reading a `scenario: gps_ins_relative` file (docs/experiments.md "Seed 003", keys in
+// docs/file-formats.md) with the project's strict YAML reader: unknown keys, bad values and
+// an inconsistent setup are hinf::Error(InvalidInput) naming file:line:col and the key path.
+// Angles are in degrees in the file (keys *_deg, *_deg_s, *_deg_h), SI inside.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "hinf/sim/gps_ins_run.hpp"
+#include "hinf/sim/gps_ins_scenario.hpp"
+
+namespace hinf::sim {
+
+// The most filters one scenario may run side by side.
+constexpr int kMaxGpsInsFilters = 8;
+
+struct GpsInsExperiment {
+  std::string path;
+  GpsInsScenario scenario;
+  std::vector<GpsInsFilterSettings> filters;  // in the file's order
+  GpsInsRunOptions options;                   // window, initial error (on_sample unset)
+  bool plots = true;
+};
+
+GpsInsExperiment parse_gps_ins_scenario(const std::string& yaml_text, const std::string& source_name);
+
+}  // namespace hinf::sim

@@ -1,0 +1,242 @@
+// Parsing only: YAML → GpsInsExperiment (gps_ins_scenario_yaml.hpp), with the project's one
+// strict YAML reader.
+#include "hinf/sim/gps_ins_scenario_yaml.hpp"
+
+#include <cmath>
+
+#include "hinf/common/error.hpp"
+#include "hinf/common/number_text.hpp"
+#include "hinf/common/yaml_reader.hpp"
+
+namespace hinf::sim {
+
+namespace {
+
+using models::kRadiansPerDegree;
+constexpr double kDegreesPerHour = kRadiansPerDegree / 3600;  // rad/s per °/h
+
+// The most samples a run may take (1e7: 116 days at 1 s; one run of 1e4 samples takes
+// about 0.7 s on the development machine).
+constexpr double kMaxSamples = 1e7;
+
+Eigen::Vector3d vector3(const YamlMap& m, const char* key, const Eigen::Vector3d& fallback, double scale = 1.0) {
+  if (!m.has(key)) return fallback;
+  const Eigen::VectorXd v = m.vector(key, 3);
+  if (!v.allFinite()) m.fail(key, "every entry must be finite");
+  return v * scale;
+}
+
+void read_timing(const YamlMap& top, GpsInsScenario& s) {
+  top.required("duration", "s");
+  s.duration = top.positive("duration");
+  s.sample_time = top.positive("sample_time", s.sample_time);
+  const double k = s.duration / s.sample_time;
+  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
+    top.fail_value("duration", s.duration, "must be a whole multiple of sample_time " + number_text(s.sample_time));
+  if (k > kMaxSamples) top.fail_value("duration", s.duration, "needs more than 1e7 samples");
+  s.truth_substeps = top.has("truth_substeps") ? top.integer("truth_substeps") : s.truth_substeps;
+  if (s.truth_substeps < 1 || s.truth_substeps > 1000) top.fail("truth_substeps", "must be in 1…1000");
+}
+
+void read_orbit(const YamlMap& top, GpsInsScenario& s) {
+  if (top.has("orbit")) {
+    const YamlMap o = top.map("orbit", {"radius", "mu", "inclination_deg", "raan_deg", "arg_lat0_deg"});
+    s.orbit_radius = o.positive("radius", s.orbit_radius);
+    s.mu = o.positive("mu", s.mu);
+    s.inclination = o.finite("inclination_deg", s.inclination / kRadiansPerDegree) * kRadiansPerDegree;
+    s.raan = o.finite("raan_deg", s.raan / kRadiansPerDegree) * kRadiansPerDegree;
+    s.arg_lat0 = o.finite("arg_lat0_deg", s.arg_lat0 / kRadiansPerDegree) * kRadiansPerDegree;
+  }
+  if (top.has("truth_dynamics"))
+    s.truth_dynamics = top.choice("truth_dynamics", {"nonlinear", "cw"}) == "cw" ? GpsInsTruthDynamics::Cw
+                                                                                 : GpsInsTruthDynamics::Nonlinear;
+  if (top.has("flyaround_frame")) top.map("flyaround_frame", {"rate"}).choice("rate", {"orbit_rate"});
+}
+
+void read_relative(const YamlMap& top, GpsInsScenario& s) {
+  if (!top.has("relative")) return;
+  const YamlMap r = top.map("relative", {"initial_position", "initial_velocity", "accel_perturbation_sigma"});
+  s.initial_position = vector3(r, "initial_position", s.initial_position);
+  if (s.initial_position.norm() == 0) r.fail("initial_position", "must not be the target's centre");
+  if (r.has("initial_velocity")) {
+    if (r.get("initial_velocity").IsScalar()) {
+      r.choice("initial_velocity", {"drift_free"});
+      s.initial_velocity_drift_free = true;
+    } else {
+      s.initial_velocity = vector3(r, "initial_velocity", s.initial_velocity);
+      s.initial_velocity_drift_free = false;
+    }
+  }
+  if (s.initial_position.cross(s.initial_velocity_used()).norm() <= 1e-12 * s.initial_position.norm())
+    r.fail("initial_velocity", "is parallel to initial_position: no fly-around plane");
+  s.accel_sigma = r.nonnegative("accel_perturbation_sigma", s.accel_sigma);
+}
+
+void read_attitude(const YamlMap& top, GpsInsScenario& s) {
+  if (!top.has("attitude")) return;
+  const YamlMap a = top.map("attitude", {"initial_euler312_deg", "initial_rate_deg_s", "inertia_nominal",
+                                         "inertia_products_fraction", "inertia_products_signs",
+                                         "torque_disturbance_sigma", "control"});
+  s.initial_euler312 = vector3(a, "initial_euler312_deg", s.initial_euler312 / kRadiansPerDegree, kRadiansPerDegree);
+  s.initial_rate = vector3(a, "initial_rate_deg_s", s.initial_rate / kRadiansPerDegree, kRadiansPerDegree);
+  s.inertia_nominal = vector3(a, "inertia_nominal", s.inertia_nominal);
+  const Eigen::Vector3d& J = s.inertia_nominal;
+  if (!(J.minCoeff() > 0)) a.fail("inertia_nominal", "the principal moments must be positive");
+  if (J(0) > J(1) + J(2) || J(1) > J(0) + J(2) || J(2) > J(0) + J(1))
+    a.fail("inertia_nominal", "violates the triangle inequality of a rigid body's principal moments");
+  s.inertia_products_fraction = a.nonnegative("inertia_products_fraction", s.inertia_products_fraction);
+  s.inertia_products_signs = vector3(a, "inertia_products_signs", s.inertia_products_signs);
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(s.inertia_products_signs(i)) != 1) a.fail("inertia_products_signs", "each entry must be 1 or -1");
+  if (Eigen::LLT<Eigen::Matrix3d>(s.inertia_true()).info() != Eigen::Success)
+    a.fail_value("inertia_products_fraction", s.inertia_products_fraction,
+                 "makes the true inertia not positive definite");
+  s.torque_sigma = a.nonnegative("torque_disturbance_sigma", s.torque_sigma);
+  if (a.has("control")) {
+    const YamlMap c = a.map("control", {"law", "kp", "kd", "on"});
+    if (c.has("law"))
+      s.control = c.choice("law", {"pd_feedforward", "none"}) == "none" ? AttitudeControlLaw::None
+                                                                        : AttitudeControlLaw::PdFeedforward;
+    s.kp = c.nonnegative("kp", s.kp);
+    s.kd = c.nonnegative("kd", s.kd);
+    if (c.has("on")) c.choice("on", {"truth"});
+  }
+}
+
+void read_gyro(const YamlMap& top, GpsInsScenario& s) {
+  if (!top.has("gyro")) return;
+  const YamlMap g = top.map("gyro", {"noise_deg_h", "bias_initial_deg_h", "bias_rw_deg_h_sqrt_h"});
+  s.gyro_noise_sigma = g.nonnegative("noise_deg_h", s.gyro_noise_sigma / kDegreesPerHour) * kDegreesPerHour;
+  s.gyro_bias_initial = vector3(g, "bias_initial_deg_h", s.gyro_bias_initial / kDegreesPerHour, kDegreesPerHour);
+  // (°/h)/√h → rad/s^1.5: ÷ 60 (√3600 s)
+  s.gyro_bias_walk_sigma =
+      g.nonnegative("bias_rw_deg_h_sqrt_h", s.gyro_bias_walk_sigma * 60 / kDegreesPerHour) * kDegreesPerHour / 60;
+}
+
+void read_gps(const YamlMap& top, GpsInsScenario& s) {
+  if (!top.has("gps")) return;
+  const YamlMap g = top.map("gps", {"constellation", "satellites_el_az_deg", "distance", "frequency",
+                                    "pseudorange_sigma", "phase_sigma", "phase_sigma_unit", "phase_mode",
+                                    "antennas_body"});
+  if (g.has("constellation")) g.choice("constellation", {"lvlh_fixed"});
+  if (g.has("satellites_el_az_deg")) {
+    const Eigen::MatrixXd m = g.matrix("satellites_el_az_deg", models::kGpsInsSatellites, 2, MatrixForms::RowsOnly);
+    for (int j = 0; j < models::kGpsInsSatellites; ++j) {
+      if (!(m(j, 0) > 0 && m(j, 0) <= 90))
+        g.fail("satellites_el_az_deg", "row " + std::to_string(j + 1) + ": the elevation must be in (0, 90]");
+      s.satellites_el_az[j] = m.row(j).transpose() * kRadiansPerDegree;
+    }
+  }
+  s.satellite_distance = g.positive("distance", s.satellite_distance);
+  s.carrier_frequency = g.positive("frequency", s.carrier_frequency);
+  s.pseudorange_sigma = g.positive("pseudorange_sigma", s.pseudorange_sigma);
+  s.phase_sigma = g.positive("phase_sigma", s.phase_sigma);
+  if (g.has("phase_sigma_unit") && g.choice("phase_sigma_unit", {"cycles", "m"}) == "m")
+    s.phase_sigma *= s.carrier_frequency / models::kSpeedOfLight;
+  if (g.has("phase_mode")) g.choice("phase_mode", {"single_difference"});
+  if (g.has("antennas_body")) {
+    const Eigen::MatrixXd m = g.matrix("antennas_body", 3, 3, MatrixForms::RowsOnly);
+    for (int k = 0; k < 3; ++k) s.antennas[k] = m.row(k).transpose();
+  }
+  for (const Eigen::Vector3d& b : s.baselines())
+    if (b.norm() == 0) g.fail("antennas_body", "two antennas coincide: a baseline is zero");
+}
+
+void read_estimate(const YamlMap& top, GpsInsInitialError& e) {
+  if (!top.has("estimate")) return;
+  const YamlMap m = top.map("estimate", {"initial_error_sigma", "sample_initial_error"});
+  if (m.has("initial_error_sigma")) {
+    const YamlMap i = m.map("initial_error_sigma", {"position", "velocity", "attitude_deg", "rate_deg_s", "bias_deg_h"});
+    e.position = i.positive("position", e.position);
+    e.velocity = i.positive("velocity", e.velocity);
+    e.attitude = i.positive("attitude_deg", e.attitude / kRadiansPerDegree) * kRadiansPerDegree;
+    e.rate = i.positive("rate_deg_s", e.rate / kRadiansPerDegree) * kRadiansPerDegree;
+    e.bias = i.positive("bias_deg_h", e.bias / kDegreesPerHour) * kDegreesPerHour;
+  }
+  e.sample = m.boolean("sample_initial_error", e.sample);
+}
+
+GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name) {
+  for (char c : name)
+    if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
+      filters.fail(name, "a filter's name may hold only a-z, 0-9 and _ (it names columns and plots)");
+  const YamlMap f = filters.map(name, {"type", "jacobian", "propagation", "process_noise",
+                                       "inertia_uncertainty_fraction", "gamma", "scale_factor", "kappa_A", "kappa_C"},
+                                EmptyMap::Allowed);
+  GpsInsFilterSettings s;
+  s.name = name;
+  std::string type = name == "ekf" || name == "rekf" ? name : "";
+  if (f.has("type")) type = f.choice("type", {"ekf", "rekf"});
+  if (type.empty()) f.reader().fail(f.node(), "filters." + name + ": needs type: ekf or rekf");
+  s.kind = type == "rekf" ? GpsInsFilterKind::Rekf : GpsInsFilterKind::Ekf;
+  if (f.has("jacobian"))
+    s.jacobian = f.choice("jacobian", {"full", "paper"}) == "paper" ? models::GpsInsJacobian::Paper
+                                                                     : models::GpsInsJacobian::Full;
+  if (f.has("propagation"))
+    s.propagation = f.choice("propagation", {"exact", "euler"}) == "euler" ? models::GpsInsPropagation::Euler
+                                                                            : models::GpsInsPropagation::Exact;
+  if (f.has("process_noise")) s.zoh_process_noise = f.choice("process_noise", {"paper_G", "zoh"}) == "zoh";
+  s.inertia_uncertainty_fraction = f.nonnegative("inertia_uncertainty_fraction", s.inertia_uncertainty_fraction);
+  for (const char* key : {"gamma", "scale_factor", "kappa_A", "kappa_C"})
+    if (f.has(key) && s.kind != GpsInsFilterKind::Rekf) f.fail(key, "only with type: rekf");
+  s.gamma = f.positive("gamma", s.gamma);
+  s.scale_factor = f.positive("scale_factor", s.scale_factor);
+  s.kappa_A = f.nonnegative("kappa_A", s.kappa_A);
+  s.kappa_C = f.nonnegative("kappa_C", s.kappa_C);
+  return s;
+}
+
+void read_filters(const YamlMap& top, std::vector<GpsInsFilterSettings>& out) {
+  top.required("filters", "a map of filter names to settings (ekf, rekf, …)");
+  const YAML::Node node = top.get("filters");
+  if (!node.IsMap() || node.size() == 0)
+    top.reader().fail(node, "filters: must be a non-empty map of filter names to settings");
+  if (node.size() > static_cast<std::size_t>(kMaxGpsInsFilters))
+    top.reader().fail(node, "filters: at most " + std::to_string(kMaxGpsInsFilters) + " filters");
+  const YamlMap filters(top.reader(), node, top.path_of("filters"));
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) top.reader().fail(kv.first, "filters: a filter's name must be a word");
+    out.push_back(read_filter(filters, kv.first.Scalar()));
+  }
+}
+
+void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions& o) {
+  o.window_end = s.duration;
+  o.window_start = std::min(o.window_start, s.duration / 2);
+  if (!top.has("metrics")) return;
+  const YamlMap m = top.map("metrics", {"steady_state_window", "attitude_error"});
+  if (m.has("steady_state_window")) {
+    const Eigen::VectorXd w = m.vector("steady_state_window", 2);
+    if (!(w.allFinite() && w(0) >= 0 && w(0) < w(1) && w(1) <= s.duration))
+      m.fail("steady_state_window", "must be [start, end] with 0 <= start < end <= duration " + number_text(s.duration));
+    o.window_start = w(0);
+    o.window_end = w(1);
+  }
+  if (m.has("attitude_error")) m.choice("attitude_error", {"euler312"});
+}
+
+}  // namespace
+
+GpsInsExperiment parse_gps_ins_scenario(const std::string& text, const std::string& source_name) {
+  const YamlReader reader(source_name);
+  const YAML::Node root = reader.load(text, "empty scenario; expected a map with scenario: gps_ins_relative");
+  const YamlMap top = reader.map(root, "", {"scenario", "duration", "sample_time", "truth_substeps", "orbit",
+                                            "truth_dynamics", "relative", "flyaround_frame", "attitude", "gyro", "gps",
+                                            "estimate", "filters", "metrics", "plots"});
+  GpsInsExperiment e;
+  e.path = source_name;
+  GpsInsScenario& s = e.scenario;
+  read_timing(top, s);
+  read_orbit(top, s);
+  read_relative(top, s);
+  read_attitude(top, s);
+  read_gyro(top, s);
+  read_gps(top, s);
+  read_estimate(top, e.options.initial_error);
+  read_filters(top, e.filters);
+  read_metrics(top, s, e.options);
+  e.plots = top.boolean("plots", e.plots);
+  return e;
+}
+
+}  // namespace hinf::sim

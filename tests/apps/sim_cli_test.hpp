@@ -1,0 +1,78 @@
+// What the end-to-end tests of hinf-sim's scenario families share: a fresh output directory,
+// running hinf-sim on configs/scenarios/NAME.yaml, reading its CSV files, and the metrics of
+// summary.json (a number for one run, {mean, max, …} for several).
+#pragma once
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sim_cli_test {
+
+namespace fs = std::filesystem;
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// A fresh directory under the temporary directory, named for the family, the case and the process.
+inline fs::path fresh_dir(const std::string& family, const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("hinf_sim_" + family + "_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+// Runs hinf-sim on configs/scenarios/NAME.yaml with ARGS into OUT; its exit code (its output
+// printed when it fails).
+inline int run_scenario(const std::string& name, const std::string& args, const fs::path& out) {
+  const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / (name + ".yaml");
+  const fs::path log = out.string() + ".log";
+  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " " +
+                          args + " --quiet > " + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (rc != 0) std::cerr << slurp(log);
+  fs::remove(log);
+  return rc;
+}
+
+struct Columns {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  std::size_t col(const std::string& name) const {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  }
+};
+
+inline Columns read_csv(const fs::path& p) {
+  Columns c;
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream hs(line);
+  for (std::string h; std::getline(hs, h, ',');) c.header.push_back(h);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ls(line);
+    for (std::string v; std::getline(ls, v, ',');) row.push_back(std::strtod(v.c_str(), nullptr));
+    c.rows.push_back(row);
+  }
+  return c;
+}
+
+inline double metric_max(const YAML::Node& m) { return m.IsMap() ? m["max"].as<double>() : m.as<double>(); }
+inline double metric_mean(const YAML::Node& m) { return m.IsMap() ? m["mean"].as<double>() : m.as<double>(); }
+inline double metric_median(const YAML::Node& m) { return m.IsMap() ? m["median"].as<double>() : m.as<double>(); }
+
+}  // namespace sim_cli_test
