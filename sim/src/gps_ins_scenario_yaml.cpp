@@ -7,6 +7,7 @@
 #include "hinf/common/error.hpp"
 #include "hinf/common/number_text.hpp"
 #include "hinf/common/yaml_reader.hpp"
+#include "scenario_fields.hpp"
 
 namespace hinf::sim {
 
@@ -19,12 +20,6 @@ constexpr double kDegreesPerHour = kRadiansPerDegree / 3600;  // rad/s per °/h
 // about 0.7 s on the development machine).
 constexpr double kMaxSamples = 1e7;
 
-Eigen::Vector3d vector3(const YamlMap& m, const char* key, const Eigen::Vector3d& fallback, double scale = 1.0) {
-  if (!m.has(key)) return fallback;
-  const Eigen::VectorXd v = m.vector(key, 3);
-  if (!v.allFinite()) m.fail(key, "every entry must be finite");
-  return v * scale;
-}
 
 void read_timing(const YamlMap& top, GpsInsScenario& s) {
   top.required("duration", "s");
@@ -56,14 +51,14 @@ void read_orbit(const YamlMap& top, GpsInsScenario& s) {
 void read_relative(const YamlMap& top, GpsInsScenario& s) {
   if (!top.has("relative")) return;
   const YamlMap r = top.map("relative", {"initial_position", "initial_velocity", "accel_perturbation_sigma"});
-  s.initial_position = vector3(r, "initial_position", s.initial_position);
+  s.initial_position = scenario_vector3(r, "initial_position", s.initial_position);
   if (s.initial_position.norm() == 0) r.fail("initial_position", "must not be the target's centre");
   if (r.has("initial_velocity")) {
     if (r.get("initial_velocity").IsScalar()) {
       r.choice("initial_velocity", {"drift_free"});
       s.initial_velocity_drift_free = true;
     } else {
-      s.initial_velocity = vector3(r, "initial_velocity", s.initial_velocity);
+      s.initial_velocity = scenario_vector3(r, "initial_velocity", s.initial_velocity);
       s.initial_velocity_drift_free = false;
     }
   }
@@ -77,15 +72,15 @@ void read_attitude(const YamlMap& top, GpsInsScenario& s) {
   const YamlMap a = top.map("attitude", {"initial_euler312_deg", "initial_rate_deg_s", "inertia_nominal",
                                          "inertia_products_fraction", "inertia_products_signs",
                                          "torque_disturbance_sigma", "control"});
-  s.initial_euler312 = vector3(a, "initial_euler312_deg", s.initial_euler312 / kRadiansPerDegree, kRadiansPerDegree);
-  s.initial_rate = vector3(a, "initial_rate_deg_s", s.initial_rate / kRadiansPerDegree, kRadiansPerDegree);
-  s.inertia_nominal = vector3(a, "inertia_nominal", s.inertia_nominal);
+  s.initial_euler312 = scenario_vector3(a, "initial_euler312_deg", s.initial_euler312 / kRadiansPerDegree, kRadiansPerDegree);
+  s.initial_rate = scenario_vector3(a, "initial_rate_deg_s", s.initial_rate / kRadiansPerDegree, kRadiansPerDegree);
+  s.inertia_nominal = scenario_vector3(a, "inertia_nominal", s.inertia_nominal);
   const Eigen::Vector3d& J = s.inertia_nominal;
   if (!(J.minCoeff() > 0)) a.fail("inertia_nominal", "the principal moments must be positive");
   if (J(0) > J(1) + J(2) || J(1) > J(0) + J(2) || J(2) > J(0) + J(1))
     a.fail("inertia_nominal", "violates the triangle inequality of a rigid body's principal moments");
   s.inertia_products_fraction = a.nonnegative("inertia_products_fraction", s.inertia_products_fraction);
-  s.inertia_products_signs = vector3(a, "inertia_products_signs", s.inertia_products_signs);
+  s.inertia_products_signs = scenario_vector3(a, "inertia_products_signs", s.inertia_products_signs);
   for (int i = 0; i < 3; ++i)
     if (std::abs(s.inertia_products_signs(i)) != 1) a.fail("inertia_products_signs", "each entry must be 1 or -1");
   if (Eigen::LLT<Eigen::Matrix3d>(s.inertia_true()).info() != Eigen::Success)
@@ -107,7 +102,7 @@ void read_gyro(const YamlMap& top, GpsInsScenario& s) {
   if (!top.has("gyro")) return;
   const YamlMap g = top.map("gyro", {"noise_deg_h", "bias_initial_deg_h", "bias_rw_deg_h_sqrt_h"});
   s.gyro_noise_sigma = g.nonnegative("noise_deg_h", s.gyro_noise_sigma / kDegreesPerHour) * kDegreesPerHour;
-  s.gyro_bias_initial = vector3(g, "bias_initial_deg_h", s.gyro_bias_initial / kDegreesPerHour, kDegreesPerHour);
+  s.gyro_bias_initial = scenario_vector3(g, "bias_initial_deg_h", s.gyro_bias_initial / kDegreesPerHour, kDegreesPerHour);
   // (°/h)/√h → rad/s^1.5: ÷ 60 (√3600 s)
   s.gyro_bias_walk_sigma =
       g.nonnegative("bias_rw_deg_h_sqrt_h", s.gyro_bias_walk_sigma * 60 / kDegreesPerHour) * kDegreesPerHour / 60;

@@ -8,6 +8,7 @@
 #include "hinf/common/number_text.hpp"
 #include "hinf/common/yaml_reader.hpp"
 #include "hinf/models/tumbling_hold.hpp"
+#include "scenario_fields.hpp"
 #include "scenario_paths.hpp"
 
 namespace hinf::sim {
@@ -27,12 +28,6 @@ using hinf::models::kRadiansPerDegree;
 // takes about a minute on the development machine).
 constexpr double kMaxIntegrationSteps = 1e8;
 
-Eigen::Vector3d vector3(const YamlMap& m, const char* key, const Eigen::Vector3d& fallback, double scale = 1.0) {
-  if (!m.has(key)) return fallback;
-  const Eigen::VectorXd v = m.vector(key, 3);
-  if (!v.allFinite()) m.fail(key, "every entry must be finite");
-  return v * scale;
-}
 
 // `a` a whole multiple of `b` (to 1e-9 relative), as the run's timing requires.
 bool whole_multiple(double a, double b) {
@@ -59,21 +54,21 @@ void read_timing(const YamlMap& top, HoldScenario& s) {
 void read_target(const YamlMap& top, HoldScenario& s) {
   if (!top.has("target")) return;
   const YamlMap t = top.map("target", {"inertia", "initial_rate_deg_s", "orbit_rate", "mu"});
-  s.inertia = vector3(t, "inertia", s.inertia);
+  s.inertia = scenario_vector3(t, "inertia", s.inertia);
   if (!(s.inertia.minCoeff() > 0)) t.fail("inertia", "the principal moments must be positive");
   const Eigen::Vector3d& J = s.inertia;
   if (J(0) > J(1) + J(2) || J(1) > J(0) + J(2) || J(2) > J(0) + J(1))
     t.fail("inertia", "violates the triangle inequality of a rigid body's principal moments");
-  s.initial_rate = vector3(t, "initial_rate_deg_s", s.initial_rate / kRadiansPerDegree, kRadiansPerDegree);
+  s.initial_rate = scenario_vector3(t, "initial_rate_deg_s", s.initial_rate / kRadiansPerDegree, kRadiansPerDegree);
   s.orbit_rate = t.positive("orbit_rate", s.orbit_rate);
   s.mu = t.positive("mu", s.mu);
 }
 
 void read_control(const YamlMap& top, HoldScenario& s) {
   s.servicer_mass = top.positive("servicer_mass", s.servicer_mass);
-  s.hold_point = vector3(top, "hold_point", s.hold_point);
-  s.initial_offset = vector3(top, "initial_offset", s.initial_offset);
-  s.initial_velocity = vector3(top, "initial_velocity", s.initial_velocity);
+  s.hold_point = scenario_vector3(top, "hold_point", s.hold_point);
+  s.initial_offset = scenario_vector3(top, "initial_offset", s.initial_offset);
+  s.initial_velocity = scenario_vector3(top, "initial_velocity", s.initial_velocity);
   if (top.has("measurement")) s.measurement_sigma = top.map("measurement", {"sigma"}).nonnegative("sigma", s.measurement_sigma);
   // feedforward: true (at the target's initial rate), false, the nominal rate it assumes, or
   // {from: target_rate}
@@ -88,8 +83,8 @@ void read_control(const YamlMap& top, HoldScenario& s) {
           if (m.has(key)) m.fail(key, "not with from: target_rate (the rate is the target's, at each sample)");
         s.feedforward_from_target_rate = true;
       }
-      s.nominal_rate = vector3(m, "rate_deg_s", s.nominal_rate / kRadiansPerDegree, kRadiansPerDegree);
-      s.nominal_accel = vector3(m, "accel_deg_s2", s.nominal_accel, kRadiansPerDegree);
+      s.nominal_rate = scenario_vector3(m, "rate_deg_s", s.nominal_rate / kRadiansPerDegree, kRadiansPerDegree);
+      s.nominal_accel = scenario_vector3(m, "accel_deg_s2", s.nominal_accel, kRadiansPerDegree);
     } else {
       s.feedforward = top.boolean("feedforward", true);
     }
