@@ -14,20 +14,6 @@ constexpr const char* kStateNames[15] = {"x",     "y",     "z",     "vx",     "v
 constexpr const char* kErrorNames[15] = {"pos_x", "pos_y", "pos_z", "vel_x", "vel_y", "vel_z", "roll", "pitch",
                                          "yaw",   "rate_1", "rate_2", "rate_3", "bias_1", "bias_2", "bias_3"};
 
-// The errors and 1σ in report units: m, m/s, deg (3-1-2 angles; σ as 4 × the MRP σ), deg/s.
-Eigen::Matrix<double, 15, 1> error_report(const GpsInsSample& s) {
-  Eigen::Matrix<double, 15, 1> e = s.error;
-  e.segment<3>(ix::kAttitude) = s.attitude_error_deg;
-  e.tail<6>() /= models::kRadiansPerDegree;
-  return e;
-}
-Eigen::Matrix<double, 15, 1> sigma_report(const GpsInsSample& s) {
-  Eigen::Matrix<double, 15, 1> v = s.sigma;
-  v.segment<3>(ix::kAttitude) *= 4 / models::kRadiansPerDegree;
-  v.tail<6>() /= models::kRadiansPerDegree;
-  return v;
-}
-
 // The metrics of one filter in one run, in the order of runs.csv and summary.json (largest
 // component of each block).
 std::vector<std::pair<const char*, double>> metric_list(const GpsInsFilterStatistics& s) {
@@ -78,7 +64,7 @@ std::string format_gps_ins_trajectory_csv(const GpsInsExperiment& e,
     for (int i = 0; i < 15; ++i) out += ',', append_num(out, samples.front()[k].truth(i));
     for (const auto& filter : samples) {
       const GpsInsSample& s = filter[k];
-      const auto err = error_report(s), sig = sigma_report(s);
+      const auto err = error_in_report_units(s), sig = sigma_in_report_units(s);
       for (int i = 0; i < 15; ++i) out += ',', append_num(out, s.estimate(i));
       for (int i = 0; i < 15; ++i) out += ',', append_num(out, err(i));
       for (int i = 0; i < 15; ++i) out += ',', append_num(out, 3 * sig(i));
@@ -113,12 +99,14 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
   j["inertia_products_fraction"] = json_num(e.scenario.inertia_products_fraction);
   Json filters = Json::object();
   for (std::size_t f = 0; f < e.filters.size(); ++f) {
+    std::vector<std::vector<std::pair<const char*, double>>> per_run;  // [run][metric]
+    for (const auto& run : stats) per_run.push_back(metric_list(run[f]));
     Json m = Json::object();
-    for (std::size_t k = 0; k < metric_list(GpsInsFilterStatistics()).size(); ++k) {
+    for (std::size_t k = 0; k < per_run.front().size(); ++k) {
       std::vector<double> values;
-      for (const auto& run : stats) values.push_back(metric_list(run[f])[k].second);
-      const char* name = metric_list(GpsInsFilterStatistics())[k].first;
-      m[name] = stats.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
+      for (const auto& run : per_run) values.push_back(run[k].second);
+      m[per_run.front()[k].first] =
+          stats.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
     }
     filters[e.filters[f].name] = m;
   }

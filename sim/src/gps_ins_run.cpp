@@ -62,18 +62,20 @@ class FilterRunner {
       rekf_.emplace(GpsInsProcess(params_), GpsInsMeasurement(params_), Q, R, f.gamma, Mat15::Zero(), ObsCov::Zero(),
                     Mat15::Zero());
       rekf_->init(x0, P0);
-      uncertainty_ = models::gps_ins_rekf_uncertainty(Mat15::Zero(), GpsInsMeasurement::Jacobian::Zero(), scale_,
-                                                     params_.sample_time, f.kappa_A, f.kappa_C);  // L of (197)
+      A_.setZero();
+      C_.setZero();
+      L_ = models::gps_ins_rekf_L(scale_);
     }
   }
 
   const State& x() const { return ekf_ ? ekf_->x() : rekf_->x(); }
   const Mat15& P() const { return ekf_ ? ekf_->P() : rekf_->P(); }
 
+  // Q (196) with the inertia term at x̂(k−1) when p_f > 0; for the REKF, A_k (197) from F at
+  // x̂(k−1).
   runtime::FilterStatus predict(const models::GpsInsEpoch& e, const Eigen::Vector3d& T_c) {
-    const GpsInsProcess& model = ekf_ ? ekf_->model() : rekf_->model();
     if (settings_.inertia_uncertainty_fraction > 0) {
-      const models::GpsInsRates r = models::gps_ins_rates(params_, e, x().segment<3>(ix::kAttitude),
+      const models::GpsInsRates r = models::gps_ins_rates(params_, e.R_FR, x().segment<3>(ix::kAttitude),
                                                           x().segment<3>(ix::kRate));
       const Mat15 Q = models::gps_ins_process_noise(params_, noise_, r.omega_BI);
       ekf_ ? ekf_->set_Q(Q) : rekf_->set_Q(Q);
@@ -83,35 +85,31 @@ class FilterRunner {
       return ekf_->predict(T_c);
     }
     rekf_->mutable_model().set_epoch(e);
-    refresh_uncertainty(model.continuous_jacobian(x()), std::nullopt);
+    A_ = models::gps_ins_rekf_A(rekf_->model().continuous_jacobian(x()), scale_, params_.sample_time,
+                                settings_.kappa_A);
+    rekf_->set_uncertainty(A_, C_, L_);
     return rekf_->predict(T_c);
   }
 
+  // For the REKF, C_k (197) from H at x̂(k|k−1).
   runtime::FilterStatus update(const models::GpsInsEpoch& e, const GpsInsMeasurement::Vector& z) {
     if (ekf_) {
       ekf_->mutable_measurement().set_epoch(e);
       return ekf_->update(z);
     }
     rekf_->mutable_measurement().set_epoch(e);
-    refresh_uncertainty(std::nullopt, rekf_->measurement().H(x()));
+    C_ = models::gps_ins_rekf_C(rekf_->measurement().H(x()), scale_, settings_.kappa_C);
+    rekf_->set_uncertainty(A_, C_, L_);
     return rekf_->update(z);
   }
 
  private:
-  // (197): A from F at x̂(k−1) before the prediction, C from H at x̂(k|k−1) before the update.
-  void refresh_uncertainty(const std::optional<Mat15>& F_c, const std::optional<GpsInsMeasurement::Jacobian>& H) {
-    const double dt = params_.sample_time;
-    if (F_c) uncertainty_.A = models::gps_ins_rekf_uncertainty(*F_c, GpsInsMeasurement::Jacobian::Zero(), scale_, dt,
-                                                                settings_.kappa_A, 0).A;
-    if (H) uncertainty_.C = models::gps_ins_rekf_uncertainty(Mat15::Zero(), *H, scale_, dt, 0, settings_.kappa_C).C;
-    rekf_->set_uncertainty(uncertainty_.A, uncertainty_.C, uncertainty_.L);
-  }
-
   GpsInsFilterSettings settings_;
   models::GpsInsParameters params_;
   models::GpsInsProcessNoise noise_;
   State scale_;
-  models::GpsInsRekfUncertainty uncertainty_;
+  Mat15 A_, L_;                                // the REKF's A_k and L of (197)
+  models::GpsInsMeasurementUncertainty C_;     // and its C_k (square factor)
   std::optional<runtime::Ekf<GpsInsProcess, GpsInsMeasurement>> ekf_;
   std::optional<runtime::Rekf<GpsInsProcess, GpsInsMeasurement>> rekf_;
 };
@@ -155,14 +153,21 @@ GpsInsSample sample_of(double t, const State& truth, const State& estimate, cons
   return out;
 }
 
-Eigen::Matrix<double, 15, 1> report_units(const GpsInsSample& s) {
+}  // namespace
+
+Eigen::Matrix<double, 15, 1> error_in_report_units(const GpsInsSample& s) {
   Eigen::Matrix<double, 15, 1> e = s.error;
   e.segment<3>(ix::kAttitude) = s.attitude_error_deg;
   e.tail<6>() /= models::kRadiansPerDegree;
   return e;
 }
 
-}  // namespace
+Eigen::Matrix<double, 15, 1> sigma_in_report_units(const GpsInsSample& s) {
+  Eigen::Matrix<double, 15, 1> v = s.sigma;
+  v.segment<3>(ix::kAttitude) *= 4 / models::kRadiansPerDegree;
+  v.tail<6>() /= models::kRadiansPerDegree;
+  return v;
+}
 
 std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
                                                 const std::vector<GpsInsFilterSettings>& filters,
@@ -174,11 +179,12 @@ std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
   // x̂(0) = x(0) ⊞ δ, δ ~ N(0, P0) (bias: b̂(0) = 0)
   const State sigma0 = initial_sigma(options.initial_error);
   const Mat15 P0 = sigma0.cwiseProduct(sigma0).asDiagonal();
-  const State x_true0 = truth.relative_state(y, 0);
+  models::GpsInsEpoch e0 = truth.epoch(0);
+  State x_true = truth.relative_state(y, e0);  // the truth at t (the loop's start)
   State delta = State::Zero();
   if (options.initial_error.sample)
     for (int i = 0; i < ix::kBias; ++i) delta(i) = sigma0(i) * initial_rng.normal();
-  State x0 = models::gps_ins_boxplus(x_true0, delta);
+  State x0 = models::gps_ins_boxplus(x_true, delta);
   x0.segment<3>(ix::kBias).setZero();
 
   std::vector<FilterRunner> runners;
@@ -190,15 +196,15 @@ std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
   const double dt = scenario.sample_time;
   const long steps = std::lround(scenario.duration / dt);
   for (long k = 0; k < steps; ++k) {
-    const double t = k * dt, t1 = (k + 1) * dt;
-    const Eigen::Vector3d T_c = truth.control_torque(y, t);
+    const double t1 = (k + 1) * dt;
+    const Eigen::Vector3d T_c = truth.control_torque(y, x_true);
     Eigen::Vector3d T_d, accel;
     for (int i = 0; i < 3; ++i) T_d(i) = scenario.torque_sigma * process_rng.normal();
     for (int i = 0; i < 3; ++i) accel(i) = scenario.accel_sigma * process_rng.normal();
-    truth.step(y, t, T_c + T_d, accel, process_rng);
-    const auto z = truth.measure(y, t1, sensor_rng);
-    const models::GpsInsEpoch e0 = truth.epoch(t), e1 = truth.epoch(t1);
-    const State x_true = truth.relative_state(y, t1);
+    truth.step(y, T_c + T_d, accel, process_rng);
+    const models::GpsInsEpoch e1 = truth.epoch(t1);
+    x_true = truth.relative_state(y, e1);
+    const auto z = truth.measure(x_true, e1, sensor_rng);
     for (std::size_t i = 0; i < runners.size(); ++i) {
       GpsInsFilterStatistics& s = stats[i];
       for (const runtime::FilterStatus status : {runners[i].predict(e0, T_c), runners[i].update(e1, z)}) {
@@ -210,8 +216,9 @@ std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
       if (!sample.error.allFinite() ||
           (t1 >= kDivergenceCheckStart && sample.error.head<3>().norm() > kDivergedPositionError))
         s.diverged = true;
-      if (t1 >= options.window_start && t1 <= options.window_end) windows[i].add(report_units(sample), sample.nees);
+      if (t1 >= options.window_start && t1 <= options.window_end) windows[i].add(error_in_report_units(sample), sample.nees);
     }
+    e0 = e1;
   }
   for (std::size_t i = 0; i < runners.size(); ++i) windows[i].write(stats[i]);
   return stats;

@@ -12,6 +12,7 @@ namespace ix = models::gps_ins_index;
 GpsInsTruth::GpsInsTruth(const GpsInsScenario& s)
     : s_(s),
       params_(s.model_parameters(models::GpsInsJacobian::Full)),
+      sensors_(params_),
       two_body_(s.mu, s.orbit_rate()),
       J_true_(s.inertia_true()),
       J_true_inv_(J_true_.inverse()),
@@ -39,17 +40,16 @@ GpsInsTruthState GpsInsTruth::initial_state() const {
   const Eigen::Matrix3d R_BF = models::dcm_from_euler312(s_.initial_euler312);
   const Eigen::Matrix3d R_BI = R_BF * e.R_FR * e.R_RI;
   y.q_IB = Eigen::Quaterniond(Eigen::Matrix3d(R_BI.transpose()));
-  const models::GpsInsRates r = models::gps_ins_rates(params_, e, models::mrp_from_dcm(R_BF), s_.initial_rate);
+  const models::GpsInsRates r = models::gps_ins_rates(params_, e.R_FR, models::mrp_from_dcm(R_BF), s_.initial_rate);
   y.omega_BI = r.omega_BI;
   y.bias = s_.gyro_bias_initial;
   return y;
 }
 
-GpsInsProcess::State GpsInsTruth::relative_state(const GpsInsTruthState& y, double t) const {
-  const models::GpsInsEpoch e = epoch(t);
+GpsInsProcess::State GpsInsTruth::relative_state(const GpsInsTruthState& y, const models::GpsInsEpoch& e) const {
   const Eigen::Matrix3d R_BI = y.q_IB.toRotationMatrix().transpose();
   const Eigen::Vector3d sigma = models::mrp_from_dcm(R_BI * e.R_RI.transpose() * e.R_FR.transpose());
-  const models::GpsInsRates r = models::gps_ins_rates(params_, e, sigma, Eigen::Vector3d::Zero());
+  const models::GpsInsRates r = models::gps_ins_rates(params_, e.R_FR, sigma, Eigen::Vector3d::Zero());
   GpsInsProcess::State x;
   x.head<6>() = y.translation;
   x.segment<3>(ix::kAttitude) = sigma;
@@ -58,9 +58,8 @@ GpsInsProcess::State GpsInsTruth::relative_state(const GpsInsTruthState& y, doub
   return x;
 }
 
-Eigen::Vector3d GpsInsTruth::control_torque(const GpsInsTruthState& y, double t) const {
+Eigen::Vector3d GpsInsTruth::control_torque(const GpsInsTruthState& y, const GpsInsProcess::State& x) const {
   if (s_.control == AttitudeControlLaw::None) return Eigen::Vector3d::Zero();
-  const GpsInsProcess::State x = relative_state(y, t);
   return y.omega_BI.cross(J_nom_ * y.omega_BI) - s_.kp * x.segment<3>(ix::kAttitude) - s_.kd * x.segment<3>(ix::kRate);
 }
 
@@ -84,7 +83,7 @@ GpsInsTruth::Derivative GpsInsTruth::derivative(const Eigen::Matrix<double, 6, 1
   return d;
 }
 
-void GpsInsTruth::step(GpsInsTruthState& y, double /*t*/, const Eigen::Vector3d& torque, const Eigen::Vector3d& accel,
+void GpsInsTruth::step(GpsInsTruthState& y, const Eigen::Vector3d& torque, const Eigen::Vector3d& accel,
                        Rng& rng) const {
   const double h = s_.sample_time / s_.truth_substeps;
   auto quat = [](const Eigen::Vector4d& v) { return Eigen::Quaterniond(v(0), v(1), v(2), v(3)); };
@@ -105,10 +104,11 @@ void GpsInsTruth::step(GpsInsTruthState& y, double /*t*/, const Eigen::Vector3d&
   for (int i = 0; i < 3; ++i) y.bias(i) += walk * rng.normal();
 }
 
-GpsInsMeasurement::Vector GpsInsTruth::measure(const GpsInsTruthState& y, double t, Rng& rng) const {
-  GpsInsMeasurement model(params_);
-  model.set_epoch(epoch(t));
-  GpsInsMeasurement::Vector z = model.h(relative_state(y, t));
+GpsInsMeasurement::Vector GpsInsTruth::measure(const GpsInsProcess::State& x, const models::GpsInsEpoch& e,
+                                               Rng& rng) const {
+  GpsInsMeasurement model = sensors_;
+  model.set_epoch(e);
+  GpsInsMeasurement::Vector z = model.h(x);
   for (int i = 0; i < 3; ++i) z(i) += s_.gyro_noise_sigma * rng.normal();
   for (int j = 0; j < models::kGpsInsSatellites; ++j) z(GpsInsMeasurement::kPseudorangeRow + j) += s_.pseudorange_sigma * rng.normal();
   for (int i = GpsInsMeasurement::kPhaseRow; i < GpsInsMeasurement::NZ; ++i) z(i) += s_.phase_sigma * rng.normal();

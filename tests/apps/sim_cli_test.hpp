@@ -33,15 +33,22 @@ inline fs::path fresh_dir(const std::string& family, const std::string& name) {
   return d;
 }
 
+// Runs hinf-sim on the scenario file SCENARIO with ARGS into OUT, its output into LOG; its
+// exit code (−1 if it did not exit).
+inline int run_scenario_file(const fs::path& scenario, const std::string& args, const fs::path& out,
+                             const fs::path& log) {
+  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " " + args +
+                          " > " + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Runs hinf-sim on configs/scenarios/NAME.yaml with ARGS into OUT; its exit code (its output
 // printed when it fails).
 inline int run_scenario(const std::string& name, const std::string& args, const fs::path& out) {
   const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / (name + ".yaml");
   const fs::path log = out.string() + ".log";
-  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " " +
-                          args + " --quiet > " + log.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const int rc = run_scenario_file(scenario, args + " --quiet", out, log);
   if (rc != 0) std::cerr << slurp(log);
   fs::remove(log);
   return rc;
@@ -50,8 +57,10 @@ inline int run_scenario(const std::string& name, const std::string& args, const 
 struct Columns {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
-  std::size_t col(const std::string& name) const {
-    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  // The column's index, −1 if there is none.
+  int col(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
   }
 };
 

@@ -24,35 +24,12 @@
 #include <string>
 #include <vector>
 
+#include "sim_cli_test.hpp"
+
 namespace fs = std::filesystem;
+using namespace sim_cli_test;
 
 namespace {
-
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  int col(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return static_cast<int>(i);
-    return -1;
-  }
-};
-
-Csv read_csv(const fs::path& p) {
-  Csv csv;
-  std::ifstream in(p);
-  std::string line;
-  std::getline(in, line);
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) csv.header.push_back(c);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) row.push_back(std::strtod(c.c_str(), nullptr));
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
 
 Eigen::MatrixXd yaml_matrix(const YAML::Node& n) {
   Eigen::MatrixXd M(n.size(), n[0].size());
@@ -61,24 +38,13 @@ Eigen::MatrixXd yaml_matrix(const YAML::Node& n) {
   return M;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 int run_sim(const std::string& args, const fs::path& log) {
   const std::string cmd = std::string(HINF_SIM_EXE) + " " + args + " > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("hinf_sim_e2e_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return sim_cli_test::fresh_dir("e2e", name); }
 
 bool is_png(const fs::path& p) {
   const std::string s = slurp(p);
@@ -86,7 +52,7 @@ bool is_png(const fs::path& p) {
 }
 
 // Max |replayed − logged| over all rows and the 6 columns of `prefix`.
-double replay_error(const Csv& csv, const fs::path& gains_file, const std::string& prefix) {
+double replay_error(const Columns& csv, const fs::path& gains_file, const std::string& prefix) {
   const YAML::Node g = YAML::LoadFile(gains_file.string());
   const Eigen::MatrixXd A_F = yaml_matrix(g["filter"]["A_F"]), B_F = yaml_matrix(g["filter"]["B_F"]),
                         C_F = yaml_matrix(g["filter"]["C_F"]);
@@ -139,7 +105,7 @@ TEST_P(Scenarios, RunsBrieflyAndReplays) {
   }
   for (const auto& f : filters) EXPECT_TRUE(f.second["converge_time_pointwise_s"].IsDefined()) << f.first;
 
-  const Csv csv = read_csv(out / "trajectory.csv");
+  const Columns csv = read_csv(out / "trajectory.csv");
   ASSERT_EQ(csv.rows.size(), 3001u);  // t = 0 … 300 s at 0.1 s
   EXPECT_DOUBLE_EQ(csv.rows.back()[0], 300.0);
   EXPECT_LT(replay_error(csv, out / "gains.yaml", "hinf"), 1e-9);

@@ -104,10 +104,7 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
     std::ofstream(cfg) << bad;
     const fs::path out = fresh_dir("bad");
     const fs::path log = out.string() + ".log";
-    const std::string cmd = std::string(HINF_SIM_EXE) + " " + cfg.string() + " --out " + out.string() + " > " +
-                            log.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2) << c.to;
+    EXPECT_EQ(run_scenario_file(cfg, "", out, log), 2) << c.to;
     EXPECT_NE(slurp(log).find(c.message), std::string::npos) << c.to << ": " << slurp(log);
     EXPECT_FALSE(fs::exists(out)) << c.to;
     fs::remove(log);
@@ -136,10 +133,9 @@ TEST(GpsInsAcceptance, TwentyRunsAtZeroAndThirtyPercent) {
   text.replace(text.find(from), from.size(), "inertia_products_fraction: 0.3");
   const fs::path cfg = fs::temp_directory_path() / ("gps_ins_p03_" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(cfg) << text;
-  const fs::path p3 = fresh_dir("p3");
-  const std::string cmd = std::string(HINF_SIM_EXE) + " " + cfg.string() + " --out " + p3.string() +
-                          " --runs 20 --jobs 2 --quiet";
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const fs::path p3 = fresh_dir("p3"), log = p3.string() + ".log";
+  ASSERT_EQ(run_scenario_file(cfg, "--runs 20 --jobs 2 --quiet", p3, log), 0) << slurp(log);
+  fs::remove(log);
   const Columns runs = read_csv(p3 / "runs.csv");
   int rekf_ahead = 0, rekf_rows = 0;
   for (std::size_t r = 0; r + 1 < runs.rows.size(); r += 2) {  // rows: ekf, rekf of each run

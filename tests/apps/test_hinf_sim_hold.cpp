@@ -174,10 +174,7 @@ TEST(HoldInvalid, Exit2NamesKeyWritesNothing) {
     std::ofstream(scenario) << bad;
     fs::copy_file(fs::path(HINF_SOURCE_DIR) / "configs" / "tumbling-hold.yaml", fs::path(dir.parent_path()) / "tumbling-hold.yaml",
                   fs::copy_options::overwrite_existing);
-    const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " > " +
-                            log.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2) << c.to << "\n" << slurp(log);
+    EXPECT_EQ(run_scenario_file(scenario, "", out, log), 2) << c.to << "\n" << slurp(log);
     EXPECT_TRUE(std::regex_search(slurp(log), std::regex(c.message))) << c.message << "\n" << slurp(log);
     EXPECT_FALSE(fs::exists(out)) << c.to;
     fs::remove_all(dir);

@@ -30,9 +30,8 @@ TEST(GpsInsTruth, DriftFreeCircleKeepsItsRadius) {
   Rng rng(1);
   double worst_radius = 0, worst_gap = 0;
   for (int k = 0; k < 10000; ++k) {
-    const double t = k * s.sample_time;
-    cw.step(a, t, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), rng);
-    nonlinear.step(b, t, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), rng);
+    cw.step(a, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), rng);
+    nonlinear.step(b, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), rng);
     worst_radius = std::max(worst_radius, std::abs(a.translation.head<3>().norm() - 200.0));
     worst_gap = std::max(worst_gap, (a.translation.head<3>() - b.translation.head<3>()).norm());
   }
@@ -58,9 +57,9 @@ TEST(GpsInsTruth, RateEquationMatchesTheTruth) {
     const Eigen::Vector3d T = truth.control_torque(y, t);
     // the truth two steps ahead with the torque held; the three-point difference is O(h²)
     GpsInsTruthState y1 = y, y2;
-    truth.step(y1, t, T, Eigen::Vector3d::Zero(), rng);
+    truth.step(y1, T, Eigen::Vector3d::Zero(), rng);
     y2 = y1;
-    truth.step(y2, t + h, T, Eigen::Vector3d::Zero(), rng);
+    truth.step(y2, T, Eigen::Vector3d::Zero(), rng);
     auto rate = [&](const GpsInsTruthState& state, double at) {
       return Eigen::Vector3d(truth.relative_state(state, at).segment<3>(ix::kRate));
     };
@@ -86,7 +85,7 @@ TEST(GpsInsTruth, AttitudeControlHoldsTheFlyAroundFrame) {
   EXPECT_LE(x0.segment<3>(ix::kRate).norm(), 1e-15);
   for (int k = 0; k < 2000; ++k) {
     const double t = k * s.sample_time;
-    truth.step(y, t, truth.control_torque(y, t), Eigen::Vector3d::Zero(), rng);
+    truth.step(y, truth.control_torque(y, t), Eigen::Vector3d::Zero(), rng);
   }
   const auto x = truth.relative_state(y, 2000);
   EXPECT_LE(x.segment<3>(ix::kAttitude).norm(), 1e-3);

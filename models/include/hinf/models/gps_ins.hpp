@@ -78,12 +78,13 @@ struct GpsInsRates {
   Eigen::Vector3d Omega, nu, omega_BI;
 };
 
-inline GpsInsRates gps_ins_rates(const GpsInsParameters& p, const GpsInsEpoch& e, const Eigen::Vector3d& sigma,
+inline GpsInsRates gps_ins_rates(const GpsInsParameters& p, const Eigen::Matrix3d& R_FR,
+                                 const Eigen::Vector3d& sigma,
                                  const Eigen::Vector3d& omega) {
   const Eigen::Matrix3d R_BF = mrp_to_dcm(sigma);
   GpsInsRates r;
   r.Omega = R_BF * Eigen::Vector3d(0, 0, p.flyaround_rate);
-  r.nu = R_BF * (e.R_FR * Eigen::Vector3d(0, 0, p.orbit_rate));
+  r.nu = R_BF * (R_FR * Eigen::Vector3d(0, 0, p.orbit_rate));
   r.omega_BI = omega + r.Omega + r.nu;
   return r;
 }
@@ -183,7 +184,7 @@ class GpsInsProcess {
   Jacobian continuous_jacobian(const State& x) const {
     using namespace gps_ins_index;
     const Eigen::Vector3d w = x.segment<3>(kRate);
-    const GpsInsRates r = gps_ins_rates(p_, epoch_, x.segment<3>(kAttitude), w);
+    const GpsInsRates r = gps_ins_rates(p_, epoch_.R_FR, x.segment<3>(kAttitude), w);
     const Eigen::Matrix3d& J = p_.inertia;
     const Eigen::Matrix3d F_J = J_inv_ * (-cross_matrix(r.omega_BI) * J + cross_matrix(J * r.omega_BI));
     const Eigen::Matrix3d a_x = cross_matrix(r.Omega + r.nu);
@@ -227,11 +228,9 @@ class GpsInsProcess {
  private:
   Eigen::Vector3d rate_derivative(const Eigen::Vector3d& sigma, const Eigen::Vector3d& w, const Input& T_c,
                                   const Eigen::Matrix3d& R_FR) const {
-    const Eigen::Matrix3d R_BF = mrp_to_dcm(sigma);
-    const Eigen::Vector3d Omega = R_BF * Eigen::Vector3d(0, 0, p_.flyaround_rate);
-    const Eigen::Vector3d nu = R_BF * (R_FR * Eigen::Vector3d(0, 0, p_.orbit_rate));
-    const Eigen::Vector3d w_BI = w + Omega + nu;
-    return J_inv_ * (T_c - w_BI.cross(p_.inertia * w_BI)) - (Omega + nu).cross(w) + Omega.cross(nu);
+    const GpsInsRates r = gps_ins_rates(p_, R_FR, sigma, w);
+    return J_inv_ * (T_c - r.omega_BI.cross(p_.inertia * r.omega_BI)) - (r.Omega + r.nu).cross(w) +
+           r.Omega.cross(r.nu);
   }
 
   GpsInsParameters p_;
@@ -261,7 +260,7 @@ class GpsInsMeasurement {
 
   Vector h(const State& x) const {
     using namespace gps_ins_index;
-    const GpsInsRates r = gps_ins_rates(p_, epoch_, x.segment<3>(kAttitude), x.segment<3>(kRate));
+    const GpsInsRates r = gps_ins_rates(p_, epoch_.R_FR, x.segment<3>(kAttitude), x.segment<3>(kRate));
     const Eigen::Vector3d r_chaser = chaser_position(x);
     const Eigen::Matrix3d R_BI = body_from_inertial(x);
     Vector z;
@@ -279,7 +278,7 @@ class GpsInsMeasurement {
   // ∂z/∂Δx, docs/maths.md (193) (`paper`: without the gyro's attitude block).
   Jacobian H(const State& x) const {
     using namespace gps_ins_index;
-    const GpsInsRates r = gps_ins_rates(p_, epoch_, x.segment<3>(kAttitude), x.segment<3>(kRate));
+    const GpsInsRates r = gps_ins_rates(p_, epoch_.R_FR, x.segment<3>(kAttitude), x.segment<3>(kRate));
     const Eigen::Vector3d r_chaser = chaser_position(x);
     const Eigen::Matrix3d R_BI = body_from_inertial(x);
     const Eigen::Matrix3d R_IR = epoch_.R_RI.transpose();
@@ -357,29 +356,44 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_process_noise(const GpsInsParameter
 
 // The REKF's uncertainty of docs/maths.md (197) ("Jacobian fraction"), with s the per-state
 // scale (s = scale_factor × the initial 1σ):
-//   L = diag(1/s) on the σ and ω blocks (zero on ρ, ρ̇, b),  A_k = κ_A Δt F_nl diag(s)  (F_nl: F with its ρ, ρ̇ rows zeroed),
+//   L = diag(1/s) on the σ and ω blocks (zero on ρ, ρ̇, b),
+//   A_k = κ_A Δt F_nl diag(s)  (F_nl: F with its ρ, ρ̇ rows zeroed),
 //   C_k = κ_C H_k diag(s)  (19 × 15, passed to the runtime as the square factor [C_k 0]).
+using GpsInsScale = Eigen::Matrix<double, 15, 1>;
+using GpsInsMeasurementUncertainty = Eigen::Matrix<double, GpsInsMeasurement::NZ, GpsInsMeasurement::NZ>;
+
+inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_A(const Eigen::Matrix<double, 15, 15>& F_continuous,
+                                                    const GpsInsScale& scale, double dt, double kappa_A) {
+  Eigen::Matrix<double, 15, 15> F_nl = F_continuous;
+  F_nl.topRows<6>().setZero();
+  return kappa_A * dt * F_nl * scale.asDiagonal();
+}
+
+inline GpsInsMeasurementUncertainty gps_ins_rekf_C(const GpsInsMeasurement::Jacobian& H, const GpsInsScale& scale,
+                                                   double kappa_C) {
+  GpsInsMeasurementUncertainty C = GpsInsMeasurementUncertainty::Zero();
+  C.leftCols<15>() = kappa_C * H * scale.asDiagonal();
+  return C;
+}
+
+// L only on Δσ and Δω: F_nl's only non-zero columns (the rate equation's error depends on the
+// attitude and the rate, not on ρ, ρ̇ or b; an L on the slowly observed b, or on the
+// unobservable split of ω and b, made γ²I − LPLᵀ fail at almost every step, §29.7).
+inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_L(const GpsInsScale& scale) {
+  Eigen::Matrix<double, 15, 15> L = Eigen::Matrix<double, 15, 15>::Zero();
+  for (int i = gps_ins_index::kAttitude; i < gps_ins_index::kBias; ++i) L(i, i) = 1 / scale(i);
+  return L;
+}
+
 struct GpsInsRekfUncertainty {
   Eigen::Matrix<double, 15, 15> A, L;
-  Eigen::Matrix<double, GpsInsMeasurement::NZ, GpsInsMeasurement::NZ> C;
+  GpsInsMeasurementUncertainty C;
 };
 
 inline GpsInsRekfUncertainty gps_ins_rekf_uncertainty(const Eigen::Matrix<double, 15, 15>& F_continuous,
-                                                      const GpsInsMeasurement::Jacobian& H,
-                                                      const Eigen::Matrix<double, 15, 1>& scale, double dt,
-                                                      double kappa_A, double kappa_C) {
-  GpsInsRekfUncertainty u;
-  Eigen::Matrix<double, 15, 15> F_nl = F_continuous;
-  F_nl.topRows<6>().setZero();
-  u.A = kappa_A * dt * F_nl * scale.asDiagonal();
-  // L only on Δσ and Δω: F_nl's only non-zero columns (the rate equation's error depends on
-  // the attitude and the rate, not on ρ, ρ̇ or b; an L on the slowly observed b, or on the
-  // unobservable split of ω and b, would make γ²I − LPLᵀ fail within a few steps)
-  u.L.setZero();
-  for (int i = gps_ins_index::kAttitude; i < gps_ins_index::kBias; ++i) u.L(i, i) = 1 / scale(i);
-  u.C.setZero();
-  u.C.leftCols<15>() = kappa_C * H * scale.asDiagonal();
-  return u;
+                                                      const GpsInsMeasurement::Jacobian& H, const GpsInsScale& scale,
+                                                      double dt, double kappa_A, double kappa_C) {
+  return {gps_ins_rekf_A(F_continuous, scale, dt, kappa_A), gps_ins_rekf_L(scale), gps_ins_rekf_C(H, scale, kappa_C)};
 }
 
 }  // namespace hinf::models

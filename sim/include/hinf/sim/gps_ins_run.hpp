@@ -62,6 +62,11 @@ struct GpsInsSample {
   double nees;
 };
 
+// The sample's error and its 1σ in report units: m, m/s, deg (the 3-1-2 angles; σ as 4 × the
+// MRP σ), deg/s — the units of the window statistics and of trajectory.csv.
+Eigen::Matrix<double, 15, 1> error_in_report_units(const GpsInsSample& s);
+Eigen::Matrix<double, 15, 1> sigma_in_report_units(const GpsInsSample& s);
+
 struct GpsInsRunOptions {
   double window_start = 4000, window_end = 10000;  // s
   GpsInsInitialError initial_error;
