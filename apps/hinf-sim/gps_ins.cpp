@@ -1,6 +1,7 @@
 // hinf-sim for `scenario: gps_ins_relative` (docs/experiments.md "Seed 003"): the Monte-Carlo
 // runs of every configured filter on each run's one measurement stream, and the run
-// directory: trajectory.csv (run 0), runs.csv, summary.json.
+// directory: trajectory.csv (run 0), runs.csv, summary.json, the plots of Figs. 1–4 and, with
+// metrics.table1_products_fractions, table1.csv (one campaign per fraction, same seeds).
 #include <filesystem>
 #include <iostream>
 
@@ -11,6 +12,7 @@
 #include "hinf/sim/gps_ins_run.hpp"
 #include "hinf/sim/gps_ins_scenario_yaml.hpp"
 #include "hinf/sim/monte_carlo.hpp"
+#include "hinf/sim/plots.hpp"
 #include "options.hpp"
 
 namespace hinf::sim_cli {
@@ -33,17 +35,55 @@ GpsInsExperiment load_experiment(const Options& o, const std::string& text) {
   return e;
 }
 
+using Campaign = std::vector<std::vector<GpsInsFilterStatistics>>;  // [run][filter]
+
+// The Monte-Carlo runs of `scenario` (seeds run_seed(o.seed, i)); run 0's samples into
+// `samples` when given.
+Campaign run_campaign(const Options& o, const GpsInsExperiment& e, const GpsInsScenario& scenario,
+                      std::vector<std::vector<GpsInsSample>>* samples) {
+  Campaign stats(static_cast<std::size_t>(o.runs));
+  for_each_run(
+      o.runs, o.jobs,
+      [&](long i) {
+        GpsInsRunOptions options = e.options;
+        if (i == 0 && samples)
+          options.on_sample = [samples](int f, const GpsInsSample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
+        stats[static_cast<std::size_t>(i)] = run_gps_ins(scenario, e.filters, options, run_seed(o.seed, i));
+      },
+      progress_bar(!o.quiet && o.runs > 1));
+  return stats;
+}
+
+// One campaign per table-1 fraction; the scenario's own campaign where the fraction is its own.
+std::vector<Campaign> run_table1_campaigns(const Options& o, const GpsInsExperiment& e, const Campaign& own) {
+  std::vector<Campaign> campaigns;
+  for (double p : e.table1_fractions) {
+    if (p == e.scenario.inertia_products_fraction) {
+      campaigns.push_back(own);
+      continue;
+    }
+    GpsInsScenario scenario = e.scenario;
+    scenario.inertia_products_fraction = p;
+    campaigns.push_back(run_campaign(o, e, scenario, nullptr));
+  }
+  return campaigns;
+}
+
 void write_outputs(const Options& o, const GpsInsExperiment& e, const std::vector<std::vector<GpsInsSample>>& samples,
-                   const std::vector<std::vector<GpsInsFilterStatistics>>& stats,
-                   const std::vector<std::uint64_t>& seeds) {
+                   const Campaign& stats, const std::vector<Campaign>& table1) {
   namespace fs = std::filesystem;
   create_output_directory(o.out_dir);
   hinf::AtomicFileSet outputs;
   outputs.protect(o.scenario_path);
   const auto at = [&](const char* name) { return (fs::path(o.out_dir) / name).string(); };
   outputs.add(at("trajectory.csv"), format_gps_ins_trajectory_csv(e, samples));
+  std::vector<std::uint64_t> seeds;
+  for (long i = 0; i < o.runs; ++i) seeds.push_back(run_seed(o.seed, i));
   outputs.add(at("runs.csv"), format_gps_ins_runs_csv(e, stats, seeds));
   outputs.add(at("summary.json"), format_gps_ins_summary_json(e, stats, o.scenario_path, o.seed));
+  if (!e.table1_fractions.empty()) outputs.add(at("table1.csv"), format_gps_ins_table1_csv(e, e.table1_fractions, table1));
+  if (!o.no_plots && e.plots)
+    write_gps_ins_plots(o.out_dir, e, samples, fs::path(o.scenario_path).stem().string(), outputs);
   outputs.commit();
 }
 
@@ -57,30 +97,23 @@ int run_gps_ins(const Options& o, const std::string& text) {
     std::cerr << "hinf-sim: error: " << err.what() << "\n";
     return hinf::exit_code(err.code());
   }
-  const std::size_t runs = static_cast<std::size_t>(o.runs);
-  std::vector<std::vector<GpsInsFilterStatistics>> stats(runs);
-  std::vector<std::uint64_t> seeds(runs);
   std::vector<std::vector<GpsInsSample>> samples(e.filters.size());
+  Campaign stats;
+  std::vector<Campaign> table1;
   try {
-    for_each_run(
-        o.runs, o.jobs,
-        [&](long i) {
-          const std::size_t r = static_cast<std::size_t>(i);
-          seeds[r] = run_seed(o.seed, i);
-          GpsInsRunOptions options = e.options;
-          if (i == 0)
-            options.on_sample = [&](int f, const GpsInsSample& s) { samples[static_cast<std::size_t>(f)].push_back(s); };
-          stats[r] = run_gps_ins(e.scenario, e.filters, options, seeds[r]);
-        },
-        progress_bar(!o.quiet && o.runs > 1));
+    stats = run_campaign(o, e, e.scenario, &samples);
+    table1 = run_table1_campaigns(o, e, stats);
   } catch (const std::invalid_argument& err) {  // a runtime filter refusing its settings
     std::cerr << "hinf-sim: error: " << err.what() << "\n";
     return hinf::exit_code(hinf::ErrorCode::InvalidInput);
   }
   try {
-    write_outputs(o, e, samples, stats, seeds);
+    write_outputs(o, e, samples, stats, table1);
   } catch (const hinf::Error& err) {
     std::cerr << "hinf-sim: error: " << err.what() << "\n";
+    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
+  } catch (const PlotError& err) {
+    std::cerr << "hinf-sim: error: plots: " << err.what() << "\n";
     return hinf::exit_code(hinf::ErrorCode::InvalidInput);
   }
   return 0;

@@ -2,7 +2,14 @@
 #include "hinf/sim/gps_ins_report.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <sstream>
 
+#include "hinf/common/gnuplot.hpp"
+#include "hinf/common/number_text.hpp"
+#include "hinf/sim/plots.hpp"
 #include "summary_json.hpp"
 
 namespace hinf::sim {
@@ -26,6 +33,14 @@ std::vector<std::pair<const char*, double>> metric_list(const GpsInsFilterStatis
           {"failed_steps", static_cast<double>(s.failed_steps)}, {"diverged", s.diverged ? 1.0 : 0.0}};
 }
 
+// The median of the finite values (NaN if none).
+double finite_median(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  return 0.5 * (v[(v.size() - 1) / 2] + v[v.size() / 2]);
+}
+
 // {mean, std, min, max, median, p90, count} over the runs with a finite value (a filter
 // whose state went non-finite has none); p90 the nearest-rank 90th percentile; null if none.
 Json stats_json(const std::vector<double>& all) {
@@ -39,10 +54,70 @@ Json stats_json(const std::vector<double>& all) {
   const std::size_t n = v.size();
   Json out = Json::object();
   for (const char* k : {"mean", "std", "min", "max"}) out[k] = j[k];
-  out["median"] = json_num(0.5 * (v[(n - 1) / 2] + v[n / 2]));
+  out["median"] = json_num(finite_median(v));
   out["p90"] = json_num(v[std::min(n - 1, static_cast<std::size_t>(std::ceil(0.9 * n)) - 1)]);
   out["count"] = n;
   return out;
+}
+
+// The figures of write_gps_ins_plots: file, quantity, first error index, unit.
+struct GpsInsFigure {
+  const char* file;
+  const char* quantity;
+  int first;
+  const char* unit;
+};
+constexpr GpsInsFigure kFigures[4] = {{"fig1_position.png", "relative position error", ix::kPosition, "m"},
+                                      {"fig2_velocity.png", "relative velocity error", ix::kVelocity, "m/s"},
+                                      {"fig3_attitude.png", "attitude error (3-1-2)", ix::kAttitude, "deg"},
+                                      {"fig4_rate.png", "angular-rate error", ix::kRate, "deg/s"}};
+
+// plot.dat: t, then per filter the 12 errors of the four figures and their 3σ, over the window.
+std::string plot_data(const GpsInsExperiment& e, const std::vector<std::vector<GpsInsSample>>& samples) {
+  std::string out;
+  const std::size_t steps = samples.empty() ? 0 : samples.front().size();
+  for (std::size_t k = 0; k < steps; ++k) {
+    const double t = samples.front()[k].t;
+    if (t < e.options.window_start || t > e.options.window_end) continue;
+    append_num(out, t);
+    for (const auto& filter : samples) {
+      const auto err = error_in_report_units(filter[k]), sig = sigma_in_report_units(filter[k]);
+      for (int i = 0; i < 12; ++i) out += ' ', append_num(out, err(i));
+      for (int i = 0; i < 12; ++i) out += ' ', append_num(out, 3 * sig(i));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+// One png per figure, three panels (the components), each filter's error (solid) and ±3σ
+// (dashed) in one colour.
+std::string plot_script(const GpsInsExperiment& e, const std::string& title, const std::string& data,
+                        const std::vector<std::string>& png) {
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1000,900 enhanced font 'Sans,10'\nset grid\nset key outside right top\nset lmargin 12\nset rmargin 24\n";
+  for (int fig = 0; fig < 4; ++fig) {
+    const GpsInsFigure& F = kFigures[fig];
+    gp << "set output " << gnuplot_quoted(png[static_cast<std::size_t>(fig)]) << "\nset multiplot layout 3,1 title "
+       << gnuplot_quoted(title + ": " + F.quantity + ", run 0, steady-state window") << " noenhanced\n";
+    for (int c = 0; c < 3; ++c) {
+      gp << "set ylabel " << gnuplot_quoted(std::string(kErrorNames[F.first + c]) + " (" + F.unit + ")")
+         << " noenhanced\n" << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
+         << (c == 0 ? "set key outside right top\n" : "unset key\n") << "plot ";
+      for (std::size_t f = 0; f < e.filters.size(); ++f) {
+        const std::size_t err_col = 2 + 24 * f + static_cast<std::size_t>(F.first + c), sig_col = err_col + 12;
+        const std::string lc = " lc " + std::to_string(f + 1);
+        gp << (f ? ", " : "") << gnuplot_quoted(data) << " using 1:" << err_col << " with lines lw 1" << lc
+           << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced, '' using 1:" << sig_col
+           << " with lines dt 2" << lc << " title " << gnuplot_quoted(e.filters[f].name + " ±3σ")
+           << " noenhanced, '' using 1:(-$" << sig_col << ") with lines dt 2" << lc << " notitle";
+      }
+      gp << "\n";
+    }
+    gp << "unset multiplot\n";
+  }
+  gp << "set output\n";
+  return gp.str();
 }
 
 }  // namespace
@@ -112,6 +187,47 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
   }
   j["filters"] = filters;
   return j.dump(2) + "\n";
+}
+
+std::string format_gps_ins_table1_csv(const GpsInsExperiment& e, const std::vector<double>& fractions,
+                                      const std::vector<std::vector<std::vector<GpsInsFilterStatistics>>>& campaigns) {
+  std::string out =
+      "inertia_products_fraction,filter,runs,attitude_roll_deg,attitude_pitch_deg,attitude_yaw_deg,"
+      "rate_1_dps,rate_2_dps,rate_3_dps,bias_1_dps,bias_2_dps,bias_3_dps,nees_mean\n";
+  for (std::size_t i = 0; i < fractions.size(); ++i)
+    for (std::size_t f = 0; f < e.filters.size(); ++f) {
+      out += number_text(fractions[i]) + "," + e.filters[f].name + "," + std::to_string(campaigns[i].size());
+      for (const Eigen::Vector3d GpsInsFilterStatistics::*block :
+           {&GpsInsFilterStatistics::attitude_max, &GpsInsFilterStatistics::rate_max, &GpsInsFilterStatistics::bias_max})
+        for (int axis = 0; axis < 3; ++axis) {
+          std::vector<double> v;
+          for (const auto& run : campaigns[i]) v.push_back((run[f].*block)(axis));
+          out += ',';
+          const double m = finite_median(v);
+          if (std::isfinite(m)) append_num(out, m);
+        }
+      std::vector<double> nees;
+      for (const auto& run : campaigns[i]) nees.push_back(run[f].nees_mean);
+      out += ',';
+      if (const double m = finite_median(nees); std::isfinite(m)) append_num(out, m);
+      out += '\n';
+    }
+  return out;
+}
+
+void write_gps_ins_plots(const std::string& dir, const GpsInsExperiment& e,
+                         const std::vector<std::vector<GpsInsSample>>& samples, const std::string& title,
+                         hinf::AtomicFileSet& outputs) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> names, png;
+  for (const GpsInsFigure& F : kFigures) {
+    names.emplace_back(F.file);
+    png.push_back(outputs.reserve((fs::path(dir) / F.file).string()));
+  }
+  hinf::AtomicFileSet scratch;  // never committed: removed on return
+  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(e, samples));
+  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(e, title, data, png));
+  run_plot_script(script, png, names);
 }
 
 }  // namespace hinf::sim

@@ -195,11 +195,12 @@ void read_filters(const YamlMap& top, std::vector<GpsInsFilterSettings>& out) {
   }
 }
 
-void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions& o) {
+void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions& o,
+                  std::vector<double>& table1_fractions) {
   o.window_end = s.duration;
   o.window_start = std::min(o.window_start, s.duration / 2);
   if (!top.has("metrics")) return;
-  const YamlMap m = top.map("metrics", {"steady_state_window", "attitude_error"});
+  const YamlMap m = top.map("metrics", {"steady_state_window", "attitude_error", "table1_products_fractions"});
   if (m.has("steady_state_window")) {
     const Eigen::VectorXd w = m.vector("steady_state_window", 2);
     if (!(w.allFinite() && w(0) >= 0 && w(0) < w(1) && w(1) <= s.duration))
@@ -208,6 +209,15 @@ void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions&
     o.window_end = w(1);
   }
   if (m.has("attitude_error")) m.choice("attitude_error", {"euler312"});
+  if (m.has("table1_products_fractions")) {
+    const Eigen::VectorXd p = m.vector("table1_products_fractions");
+    for (Eigen::Index i = 0; i < p.size(); ++i) {
+      if (p(i) < 0 || p(i) >= 1 || (i > 0 && p(i) <= p(i - 1)))
+        m.fail("table1_products_fractions", "must be increasing fractions in [0, 1), got " + number_text(p(i)) +
+                                                " at index " + std::to_string(i));
+      table1_fractions.push_back(p(i));
+    }
+  }
 }
 
 }  // namespace
@@ -229,7 +239,7 @@ GpsInsExperiment parse_gps_ins_scenario(const std::string& text, const std::stri
   read_gps(top, s);
   read_estimate(top, e.options.initial_error);
   read_filters(top, e.filters);
-  read_metrics(top, s, e.options);
+  read_metrics(top, s, e.options, e.table1_fractions);
   e.plots = top.boolean("plots", e.plots);
   return e;
 }

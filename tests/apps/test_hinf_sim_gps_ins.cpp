@@ -1,16 +1,22 @@
 // End-to-end: hinf-sim on the gps_ins_relative scenarios (seed 003, docs/experiments.md),
 // checked from its output files only:
-//  - both configs/scenarios/gps-ins-*.yaml run (shortened) and write their files; summary.json
+//  - every configs/scenarios/gps-ins-*.yaml runs (shortened) and write their files; summary.json
 //    agrees with trajectory.csv (the window maxima recomputed here) and with runs.csv;
+//  - table1.csv: its row for the scenario's own p is summary.json's per-axis maxima, its row
+//    for another p that of a separate run of the scenario with that p; --no-plots;
 //  - the same seed gives the same files, with one job or two;
 //  - invalid input: exit 2 naming the key, nothing written;
 //  - (heavy) the acceptance over 20 runs of 10 000 s: the EKF's NEES in the 99 % χ²
-//    band and its accuracy; the REKF at p = 0.3 without γ violation or divergence, and ahead of
-//    the EKF that ignores the products of inertia.
+//    band; the EKF's and the REKF's accuracy; both REKFs at p = 0.3 without γ violation or
+//    divergence, and ahead of the EKF that ignores the products of inertia.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -21,25 +27,54 @@ using namespace sim_cli_test;
 
 namespace {
 fs::path fresh_dir(const std::string& name) { return sim_cli_test::fresh_dir("gps_ins", name); }
+const char* const kFigures[4] = {"fig1_position.png", "fig2_velocity.png", "fig3_attitude.png", "fig4_rate.png"};
 const char* const kErrorBlocks[5][2] = {{"position_max_m", "pos"},
                                         {"velocity_max_mps", "vel"},
                                         {"attitude_max_deg", ""},
                                         {"rate_max_dps", "rate"},
                                         {"bias_max_dps", "bias"}};
+std::vector<std::string> filter_names(const YAML::Node& summary) {
+  std::vector<std::string> names;
+  for (const auto& f : summary["filters"]) names.push_back(f.first.as<std::string>());
+  return names;
+}
+
+// The shipped scenario with `from` replaced by `to`, written to a temporary file.
+fs::path edited_scenario(const std::string& tag, const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::runtime_error("not in the scenario: " + from);
+    text.replace(at, from.size(), to);
+  }
+  const fs::path cfg = fs::temp_directory_path() / ("gps_ins_" + tag + "_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(cfg) << text;
+  return cfg;
+}
+const std::pair<std::string, std::string> kNoTable1 = {",\n          table1_products_fractions: [0, 0.1, 0.3]}", "}"};
 }  // namespace
 
 // 600 s (window 300–600 s): the files, and each filter's window maxima from trajectory.csv.
 TEST(GpsInsScenarios, RunsBrieflyAndSummaryMatchesTrajectory) {
-  for (const char* name : {"gps-ins-flyaround", "gps-ins-flyaround-as-printed"}) {
+  std::vector<std::string> names;  // every configs/scenarios/gps-ins-*.yaml
+  for (const auto& entry : fs::directory_iterator(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios"))
+    if (entry.path().extension() == ".yaml" && entry.path().filename().string().rfind("gps-ins-", 0) == 0)
+      names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  ASSERT_GE(names.size(), 3u);
+  for (const std::string& name : names) {
     const fs::path out = fresh_dir(name);
     ASSERT_EQ(run_scenario(name, "--duration 600", out), 0) << name;
-    for (const char* f : {"trajectory.csv", "runs.csv", "summary.json"}) EXPECT_TRUE(fs::exists(out / f)) << f;
-    const Columns tr = read_csv(out / "trajectory.csv");
-    ASSERT_EQ(tr.rows.size(), 600u) << name;
-    EXPECT_EQ(tr.header.size(), 1 + 15 + 2 * (15 * 3 + 1)) << name;
+    for (const char* f : {"trajectory.csv", "runs.csv", "summary.json", "table1.csv"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+    for (const char* png : kFigures) EXPECT_EQ(slurp(out / png).substr(0, 8), "\x89PNG\r\n\x1a\n") << png;
     const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
     EXPECT_EQ(summary["scenario_family"].as<std::string>(), "gps_ins_relative");
-    for (const char* filter : {"ekf", "rekf"}) {
+    const std::vector<std::string> filters = filter_names(summary);
+    ASSERT_GE(filters.size(), 2u) << name;
+    const Columns tr = read_csv(out / "trajectory.csv");
+    ASSERT_EQ(tr.rows.size(), 600u) << name;
+    EXPECT_EQ(tr.header.size(), 1 + 15 + filters.size() * (15 * 3 + 1)) << name;
+    for (const std::string& filter : filters) {
       const YAML::Node m = summary["filters"][filter];
       ASSERT_TRUE(m.IsMap()) << filter;
       const std::vector<std::vector<std::string>> blocks = {{"pos_x", "pos_y", "pos_z"},
@@ -71,11 +106,50 @@ TEST(GpsInsScenarios, SameSeedSameFilesWithOneJobOrTwo) {
   const fs::path a = fresh_dir("det_a"), b = fresh_dir("det_b");
   ASSERT_EQ(run_scenario("gps-ins-flyaround", "--duration 200 --runs 3 --seed 7", a), 0);
   ASSERT_EQ(run_scenario("gps-ins-flyaround", "--duration 200 --runs 3 --seed 7 --jobs 2", b), 0);
-  for (const char* f : {"trajectory.csv", "runs.csv"}) EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
+  for (const char* f : {"trajectory.csv", "runs.csv", "table1.csv"}) EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
   const Columns runs = read_csv(a / "runs.csv");
-  EXPECT_EQ(runs.rows.size(), 6u);  // 3 runs × 2 filters
+  EXPECT_EQ(runs.rows.size(), 9u);  // 3 runs × 3 filters
   fs::remove_all(a);
   fs::remove_all(b);
+}
+
+// table1.csv, one 600 s run: the row of the scenario's own p (0) is its summary.json's per-axis
+// window maxima; the row of p = 0.3 is what a separate run of the scenario with p = 0.3 writes
+// in its trajectory.csv (the same seed). --no-plots writes no png.
+TEST(GpsInsScenarios, Table1RowsAreTheCampaignsOfEachFraction) {
+  const fs::path own = fresh_dir("t1_own"), other = fresh_dir("t1_p3");
+  ASSERT_EQ(run_scenario("gps-ins-flyaround", "--duration 600 --no-plots", own), 0);
+  for (const char* png : kFigures) EXPECT_FALSE(fs::exists(own / png)) << png;
+  const fs::path cfg = edited_scenario("p3", {{"inertia_products_fraction: 0.0", "inertia_products_fraction: 0.3"}, kNoTable1});
+  const fs::path log = other.string() + ".log";
+  ASSERT_EQ(run_scenario_file(cfg, "--duration 600 --no-plots --quiet", other, log), 0) << slurp(log);
+  EXPECT_FALSE(fs::exists(other / "table1.csv"));
+  const Columns table = read_csv(own / "table1.csv");
+  ASSERT_EQ(table.rows.size(), 9u);  // p = 0, 0.1, 0.3 × ekf, rekf, rekf_p30
+  const char* const axes[3][3] = {{"roll", "pitch", "yaw"}, {"rate_1", "rate_2", "rate_3"}, {"bias_1", "bias_2", "bias_3"}};
+  const char* const table_columns[3][3] = {{"attitude_roll_deg", "attitude_pitch_deg", "attitude_yaw_deg"},
+                                           {"rate_1_dps", "rate_2_dps", "rate_3_dps"},
+                                           {"bias_1_dps", "bias_2_dps", "bias_3_dps"}};
+  const std::vector<std::string> filters = {"ekf", "rekf", "rekf_p30"};
+  for (const auto& [dir, p, first_row] : {std::tuple{own, 0.0, 0}, std::tuple{other, 0.3, 6}}) {
+    const Columns tr = read_csv(dir / "trajectory.csv");
+    for (std::size_t f = 0; f < filters.size(); ++f) {
+      const auto& row = table.rows[static_cast<std::size_t>(first_row) + f];
+      EXPECT_EQ(row[table.col("inertia_products_fraction")], p);
+      EXPECT_EQ(row[table.col("runs")], 1.0);
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          double worst = 0;
+          for (const auto& t : tr.rows)
+            if (t[0] >= 300 && t[0] <= 600) worst = std::max(worst, std::abs(t[tr.col(filters[f] + "_err_" + axes[b][a])]));
+          EXPECT_NEAR(row[table.col(table_columns[b][a])], worst, 1e-12 * worst) << p << " " << filters[f] << " " << axes[b][a];
+        }
+    }
+  }
+  fs::remove(log);
+  fs::remove(cfg);
+  fs::remove_all(own);
+  fs::remove_all(other);
 }
 
 // Invalid scenarios: exit 2, the message names the key, no output directory.
@@ -93,6 +167,8 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
       {"duration: 10000", "duration: 10000.5", "duration = 10000.5: must be a whole multiple of sample_time"},
       {"metrics: {steady_state_window: [4000, 10000]", "metrics: {steady_state_window: [4000, 20000]",
        "metrics.steady_state_window"},
+      {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.3, 0.1]",
+       "metrics.table1_products_fractions: must be increasing fractions in [0, 1), got 0.1 at index 2"},
   };
   const std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
   for (const auto& c : cases) {
@@ -112,42 +188,44 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
   }
 }
 
-// The acceptance (heavy: 3 × 20 runs of 10 000 s, ~45 s in Release).
+// The acceptance (heavy: 20 runs of 10 000 s at p = 0 with the table-1 campaigns at
+// p = 0.1 and 0.3, then 20 runs at p = 0.3; ~90 s in Release).
 TEST(GpsInsAcceptance, TwentyRunsAtZeroAndThirtyPercent) {
   const fs::path p0 = fresh_dir("p0");
-  ASSERT_EQ(run_scenario("gps-ins-flyaround", "--runs 20 --jobs 2", p0), 0);
-  const YAML::Node ekf = YAML::LoadFile((p0 / "summary.json").string())["filters"]["ekf"];
+  ASSERT_EQ(run_scenario("gps-ins-flyaround", "--runs 20 --jobs 2 --no-plots", p0), 0);
+  const YAML::Node filters = YAML::LoadFile((p0 / "summary.json").string())["filters"];
+  const YAML::Node ekf = filters["ekf"];
   // C5: mean NEES over 20 runs × the window in the 99 % χ² band of 15 degrees of freedom
   EXPECT_GE(ekf["nees_mean"]["mean"].as<double>(), 12.0);
   EXPECT_LE(ekf["nees_mean"]["mean"].as<double>(), 18.3);
-  // C6: median over runs of the window maximum (EKF)
-  EXPECT_LE(metric_median(ekf["position_max_m"]), 0.15);
-  EXPECT_LE(metric_median(ekf["velocity_max_mps"]), 3e-4);
-  EXPECT_LE(metric_median(ekf["attitude_max_deg"]), 3e-3);
-  EXPECT_LE(metric_median(ekf["rate_max_dps"]), 2e-5);
+  // C6: median over runs of the window maximum, the EKF and the REKF
+  for (const char* name : {"ekf", "rekf"}) {
+    const YAML::Node m = filters[name];
+    EXPECT_LE(metric_median(m["position_max_m"]), 0.15) << name;
+    EXPECT_LE(metric_median(m["velocity_max_mps"]), 3e-4) << name;
+    EXPECT_LE(metric_median(m["attitude_max_deg"]), 3e-3) << name;
+    EXPECT_LE(metric_median(m["rate_max_dps"]), 2e-5) << name;
+  }
   fs::remove_all(p0);
 
-  // C7 and K4 at p = 0.3: the scenario with inertia_products_fraction 0.3
-  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
-  const std::string from = "inertia_products_fraction: 0.0";
-  text.replace(text.find(from), from.size(), "inertia_products_fraction: 0.3");
-  const fs::path cfg = fs::temp_directory_path() / ("gps_ins_p03_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(cfg) << text;
+  // C7 and K4 at p = 0.3, for both REKFs (p_f = 0.03 and 0.3)
+  const fs::path cfg = edited_scenario("p03", {{"inertia_products_fraction: 0.0", "inertia_products_fraction: 0.3"}, kNoTable1});
   const fs::path p3 = fresh_dir("p3"), log = p3.string() + ".log";
-  ASSERT_EQ(run_scenario_file(cfg, "--runs 20 --jobs 2 --quiet", p3, log), 0) << slurp(log);
+  ASSERT_EQ(run_scenario_file(cfg, "--runs 20 --jobs 2 --quiet --no-plots", p3, log), 0) << slurp(log);
   fs::remove(log);
   const Columns runs = read_csv(p3 / "runs.csv");
-  int rekf_ahead = 0, rekf_rows = 0;
-  for (std::size_t r = 0; r + 1 < runs.rows.size(); r += 2) {  // rows: ekf, rekf of each run
-    const auto& e = runs.rows[r];
-    const auto& k = runs.rows[r + 1];
-    EXPECT_EQ(k[runs.col("gamma_violations")], 0.0);
-    EXPECT_EQ(k[runs.col("diverged")], 0.0);
-    rekf_ahead += k[runs.col("attitude_max_deg")] <= e[runs.col("attitude_max_deg")];
-    ++rekf_rows;
+  ASSERT_EQ(runs.rows.size(), 60u);  // rows: ekf, rekf, rekf_p30 of each run
+  for (std::size_t k : {1u, 2u}) {
+    int ahead = 0;
+    for (std::size_t r = 0; r < runs.rows.size(); r += 3) {
+      const auto& e = runs.rows[r];
+      const auto& rekf = runs.rows[r + k];
+      EXPECT_EQ(rekf[runs.col("gamma_violations")], 0.0) << k;
+      EXPECT_EQ(rekf[runs.col("diverged")], 0.0) << k;
+      ahead += rekf[runs.col("attitude_max_deg")] <= e[runs.col("attitude_max_deg")];
+    }
+    EXPECT_GE(ahead, 14) << k;  // K4: in at least 70 % of the runs
   }
-  EXPECT_EQ(rekf_rows, 20);
-  EXPECT_GE(rekf_ahead, 14);  // K4: in at least 70 % of the runs
   fs::remove_all(p3);
   fs::remove(cfg);
 }

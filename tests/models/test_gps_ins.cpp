@@ -285,8 +285,12 @@ TEST(GpsInsModel, ProcessNoiseAndRekfUncertaintyHaveTheDocumentedBlocks) {
   State s;
   s.setConstant(2.0);
   const auto u = gps_ins_rekf_uncertainty(model.continuous_jacobian(x), meas.H(x), s, 2.0, 0.1, 1e-3);
-  EXPECT_EQ(u.A.topRows(6).norm(), 0.0);
-  EXPECT_LE((u.A.bottomRows<9>() - 0.1 * 2.0 * model.continuous_jacobian(x).bottomRows<9>() * 2.0).norm(), 1e-15);
+  // A_k = κ_A Δt F_rate diag(s): only the rate equation's rows (197)
+  EXPECT_EQ(u.A.topRows<9>().norm(), 0.0);
+  EXPECT_EQ(u.A.bottomRows<3>().norm(), 0.0);
+  const auto F_rate = model.continuous_jacobian(x).middleRows<3>(ix::kRate);
+  EXPECT_GT(F_rate.norm(), 0.0);
+  EXPECT_LE((u.A.middleRows<3>(ix::kRate) - 0.1 * 2.0 * F_rate * 2.0).norm(), 1e-15 * F_rate.norm());
   State L_diag = State::Zero();
   L_diag.segment<6>(ix::kAttitude).setConstant(0.5);  // σ and ω only
   EXPECT_EQ(u.L, Mat15(L_diag.asDiagonal()));

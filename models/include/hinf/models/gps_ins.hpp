@@ -357,16 +357,17 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_process_noise(const GpsInsParameter
 // The REKF's uncertainty of docs/maths.md (197) ("Jacobian fraction"), with s the per-state
 // scale (s = scale_factor × the initial 1σ):
 //   L = diag(1/s) on the σ and ω blocks (zero on ρ, ρ̇, b),
-//   A_k = κ_A Δt F_nl diag(s)  (F_nl: F with its ρ, ρ̇ rows zeroed),
+//   A_k = κ_A Δt F_rate diag(s)  (F_rate: F's rows of the rate equation, every other row zero: the
+//         CW translation, the MRP kinematics and the bias walk are exact),
 //   C_k = κ_C H_k diag(s)  (19 × 15, passed to the runtime as the square factor [C_k 0]).
 using GpsInsScale = Eigen::Matrix<double, 15, 1>;
 using GpsInsMeasurementUncertainty = Eigen::Matrix<double, GpsInsMeasurement::NZ, GpsInsMeasurement::NZ>;
 
 inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_A(const Eigen::Matrix<double, 15, 15>& F_continuous,
                                                     const GpsInsScale& scale, double dt, double kappa_A) {
-  Eigen::Matrix<double, 15, 15> F_nl = F_continuous;
-  F_nl.topRows<6>().setZero();
-  return kappa_A * dt * F_nl * scale.asDiagonal();
+  Eigen::Matrix<double, 15, 15> F_rate = Eigen::Matrix<double, 15, 15>::Zero();
+  F_rate.middleRows<3>(gps_ins_index::kRate) = F_continuous.middleRows<3>(gps_ins_index::kRate);
+  return kappa_A * dt * F_rate * scale.asDiagonal();
 }
 
 inline GpsInsMeasurementUncertainty gps_ins_rekf_C(const GpsInsMeasurement::Jacobian& H, const GpsInsScale& scale,
@@ -376,7 +377,7 @@ inline GpsInsMeasurementUncertainty gps_ins_rekf_C(const GpsInsMeasurement::Jaco
   return C;
 }
 
-// L only on Δσ and Δω: F_nl's only non-zero columns (the rate equation's error depends on the
+// L only on Δσ and Δω: F_rate's only non-zero columns (the rate equation's error depends on the
 // attitude and the rate, not on ρ, ρ̇ or b; an L on the slowly observed b, or on the
 // unobservable split of ω and b, made γ²I − LPLᵀ fail at almost every step, §29.7).
 inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_L(const GpsInsScale& scale) {

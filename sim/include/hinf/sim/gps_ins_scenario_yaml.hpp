@@ -20,6 +20,10 @@ struct GpsInsExperiment {
   std::vector<GpsInsFilterSettings> filters;  // in the file's order
   GpsInsRunOptions options;                   // window, initial error (on_sample unset)
   bool plots = true;
+  // metrics.table1_products_fractions: the truth's products-of-inertia fractions p of
+  // table1.csv (the source's Table 1), each a Monte-Carlo campaign with the same seeds;
+  // empty: no table1.csv.
+  std::vector<double> table1_fractions;
 };
 
 GpsInsExperiment parse_gps_ins_scenario(const std::string& yaml_text, const std::string& source_name);

@@ -159,6 +159,7 @@ class KalmanCore {
                                                      const State dx = K * nu;
                                                      x = model_.boxplus(x, dx);
                                                    } else {
+                                                     (void)model_;  // `this` is captured for boxplus only
                                                      x.noalias() += K * nu;
                                                    }
                                                  });
