@@ -41,9 +41,33 @@ ObsCov measurement_covariance(const GpsInsScenario& s) {
   return R;
 }
 
-// One configured filter: the EKF or the REKF on the 15-state model, with Q (196) and the
-// REKF's uncertainty (197) refreshed at every step.
+// The filters' measurement from the simulated single differences z (19 rows): z itself, or
+// D z of (193a) — with R as D R Dᵀ.
+template <class Measurement>
+struct FromSingleDifference {
+  static const typename Measurement::Vector& z(const GpsInsMeasurement::Vector& z) { return z; }
+  static const ObsCov& R(const ObsCov& R) { return R; }
+};
+template <>
+struct FromSingleDifference<models::GpsInsDoubleDifferenceMeasurement> {
+  using DD = models::GpsInsDoubleDifferenceMeasurement;
+  static DD::Vector z(const GpsInsMeasurement::Vector& z) { return D() * z; }
+  static Eigen::Matrix<double, DD::NZ, DD::NZ> R(const ObsCov& R) { return D() * R * D().transpose(); }
+  static const DD::Map& D() {
+    static const DD::Map map = DD::map();
+    return map;
+  }
+};
+
+// One configured filter: the EKF or the REKF on the 15-state model with the measurement
+// model `Measurement` (single or double differences), with Q (196) and the REKF's
+// uncertainty (197) refreshed at every step.
+template <class Measurement>
 class FilterRunner {
+  static constexpr int NZm = Measurement::NZ;
+  using ObsCovM = Eigen::Matrix<double, NZm, NZm>;
+  using Convert = FromSingleDifference<Measurement>;
+
  public:
   FilterRunner(const GpsInsScenario& s, const GpsInsFilterSettings& f, const State& x0, const Mat15& P0)
       : settings_(f), params_(s.model_parameters(f.jacobian)), scale_(f.scale_factor * P0.diagonal().cwiseSqrt()) {
@@ -54,12 +78,12 @@ class FilterRunner {
     noise_.inertia_uncertainty_fraction = f.inertia_uncertainty_fraction;
     noise_.zoh = f.zoh_process_noise;
     const Mat15 Q = models::gps_ins_process_noise(params_, noise_, Eigen::Vector3d::Zero());
-    const ObsCov R = measurement_covariance(s);
+    const ObsCovM R = Convert::R(measurement_covariance(s));
     if (f.kind == GpsInsFilterKind::Ekf) {
-      ekf_.emplace(GpsInsProcess(params_), GpsInsMeasurement(params_), Q, R);
+      ekf_.emplace(GpsInsProcess(params_), Measurement(params_), Q, R);
       ekf_->init(x0, P0);
     } else {
-      rekf_.emplace(GpsInsProcess(params_), GpsInsMeasurement(params_), Q, R, f.gamma, Mat15::Zero(), ObsCov::Zero(),
+      rekf_.emplace(GpsInsProcess(params_), Measurement(params_), Q, R, f.gamma, Mat15::Zero(), ObsCovM::Zero(),
                     Mat15::Zero());
       rekf_->init(x0, P0);
       A_.setZero();
@@ -75,8 +99,8 @@ class FilterRunner {
   // x̂(k−1).
   runtime::FilterStatus predict(const models::GpsInsEpoch& e, const Eigen::Vector3d& T_c) {
     if (settings_.inertia_uncertainty_fraction > 0) {
-      const models::GpsInsRates r = models::gps_ins_rates(params_, e.R_FR, x().segment<3>(ix::kAttitude),
-                                                          x().segment<3>(ix::kRate));
+      const models::GpsInsRates r = models::gps_ins_rates(params_, e.R_FR, x().template segment<3>(ix::kAttitude),
+                                                          x().template segment<3>(ix::kRate));
       const Mat15 Q = models::gps_ins_process_noise(params_, noise_, r.omega_BI);
       ekf_ ? ekf_->set_Q(Q) : rekf_->set_Q(Q);
     }
@@ -91,16 +115,16 @@ class FilterRunner {
     return rekf_->predict(T_c);
   }
 
-  // For the REKF, C_k (197) from H at x̂(k|k−1).
+  // For the REKF, C_k (197) from H at x̂(k|k−1). z: the simulated single differences.
   runtime::FilterStatus update(const models::GpsInsEpoch& e, const GpsInsMeasurement::Vector& z) {
     if (ekf_) {
       ekf_->mutable_measurement().set_epoch(e);
-      return ekf_->update(z);
+      return ekf_->update(Convert::z(z));
     }
     rekf_->mutable_measurement().set_epoch(e);
-    C_ = models::gps_ins_rekf_C(rekf_->measurement().H(x()), scale_, settings_.kappa_C);
+    C_ = models::gps_ins_rekf_C<NZm>(rekf_->measurement().H(x()), scale_, settings_.kappa_C);
     rekf_->set_uncertainty(A_, C_, L_);
-    return rekf_->update(z);
+    return rekf_->update(Convert::z(z));
   }
 
  private:
@@ -109,9 +133,9 @@ class FilterRunner {
   models::GpsInsProcessNoise noise_;
   State scale_;
   Mat15 A_, L_;                                // the REKF's A_k and L of (197)
-  models::GpsInsMeasurementUncertainty C_;     // and its C_k (square factor)
-  std::optional<runtime::Ekf<GpsInsProcess, GpsInsMeasurement>> ekf_;
-  std::optional<runtime::Rekf<GpsInsProcess, GpsInsMeasurement>> rekf_;
+  ObsCovM C_;                                   // and its C_k (square factor)
+  std::optional<runtime::Ekf<GpsInsProcess, Measurement>> ekf_;
+  std::optional<runtime::Rekf<GpsInsProcess, Measurement>> rekf_;
 };
 
 // Running maximum and sum of squares of the window's errors, per component.
@@ -153,6 +177,59 @@ GpsInsSample sample_of(double t, const State& truth, const State& estimate, cons
   return out;
 }
 
+// The truth and measurement stream of one run, at its start.
+struct Stream {
+  const GpsInsTruth& truth;
+  GpsInsTruthState y;
+  models::GpsInsEpoch e0;
+  State x_true;
+  Rng& process_rng;
+  Rng& sensor_rng;
+};
+
+// Every filter on the stream, to its end: the window statistics.
+template <class Measurement>
+std::vector<GpsInsFilterStatistics> run_filters(const GpsInsScenario& scenario,
+                                                const std::vector<GpsInsFilterSettings>& filters,
+                                                const GpsInsRunOptions& options, Stream st, const State& x0,
+                                                const Mat15& P0) {
+  std::vector<FilterRunner<Measurement>> runners;
+  runners.reserve(filters.size());
+  for (const auto& f : filters) runners.emplace_back(scenario, f, x0, P0);
+  std::vector<WindowAccumulator> windows(filters.size());
+  std::vector<GpsInsFilterStatistics> stats(filters.size());
+
+  const double dt = scenario.sample_time;
+  const long steps = std::lround(scenario.duration / dt);
+  for (long k = 0; k < steps; ++k) {
+    const double t1 = (k + 1) * dt;
+    const Eigen::Vector3d T_c = st.truth.control_torque(st.y, st.x_true);
+    Eigen::Vector3d T_d, accel;
+    for (int i = 0; i < 3; ++i) T_d(i) = scenario.torque_sigma * st.process_rng.normal();
+    for (int i = 0; i < 3; ++i) accel(i) = scenario.accel_sigma * st.process_rng.normal();
+    st.truth.step(st.y, T_c + T_d, accel, st.process_rng);
+    const models::GpsInsEpoch e1 = st.truth.epoch(t1);
+    st.x_true = st.truth.relative_state(st.y, e1);
+    const auto z = st.truth.measure(st.x_true, e1, st.sensor_rng);
+    for (std::size_t i = 0; i < runners.size(); ++i) {
+      GpsInsFilterStatistics& s = stats[i];
+      for (const runtime::FilterStatus status : {runners[i].predict(st.e0, T_c), runners[i].update(e1, z)}) {
+        if (status == runtime::FilterStatus::GammaConditionViolated) ++s.gamma_violations;
+        else if (status != runtime::FilterStatus::Ok) ++s.failed_steps;
+      }
+      const GpsInsSample sample = sample_of(t1, st.x_true, runners[i].x(), runners[i].P());
+      if (options.on_sample) options.on_sample(static_cast<int>(i), sample);
+      if (!sample.error.allFinite() ||
+          (t1 >= kDivergenceCheckStart && sample.error.head<3>().norm() > kDivergedPositionError))
+        s.diverged = true;
+      if (t1 >= options.window_start && t1 <= options.window_end) windows[i].add(error_in_report_units(sample), sample.nees);
+    }
+    st.e0 = e1;
+  }
+  for (std::size_t i = 0; i < runners.size(); ++i) windows[i].write(stats[i]);
+  return stats;
+}
+
 }  // namespace
 
 Eigen::Matrix<double, 15, 1> error_in_report_units(const GpsInsSample& s) {
@@ -187,41 +264,10 @@ std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
   State x0 = models::gps_ins_boxplus(x_true, delta);
   x0.segment<3>(ix::kBias).setZero();
 
-  std::vector<FilterRunner> runners;
-  runners.reserve(filters.size());
-  for (const auto& f : filters) runners.emplace_back(scenario, f, x0, P0);
-  std::vector<WindowAccumulator> windows(filters.size());
-  std::vector<GpsInsFilterStatistics> stats(filters.size());
-
-  const double dt = scenario.sample_time;
-  const long steps = std::lround(scenario.duration / dt);
-  for (long k = 0; k < steps; ++k) {
-    const double t1 = (k + 1) * dt;
-    const Eigen::Vector3d T_c = truth.control_torque(y, x_true);
-    Eigen::Vector3d T_d, accel;
-    for (int i = 0; i < 3; ++i) T_d(i) = scenario.torque_sigma * process_rng.normal();
-    for (int i = 0; i < 3; ++i) accel(i) = scenario.accel_sigma * process_rng.normal();
-    truth.step(y, T_c + T_d, accel, process_rng);
-    const models::GpsInsEpoch e1 = truth.epoch(t1);
-    x_true = truth.relative_state(y, e1);
-    const auto z = truth.measure(x_true, e1, sensor_rng);
-    for (std::size_t i = 0; i < runners.size(); ++i) {
-      GpsInsFilterStatistics& s = stats[i];
-      for (const runtime::FilterStatus status : {runners[i].predict(e0, T_c), runners[i].update(e1, z)}) {
-        if (status == runtime::FilterStatus::GammaConditionViolated) ++s.gamma_violations;
-        else if (status != runtime::FilterStatus::Ok) ++s.failed_steps;
-      }
-      const GpsInsSample sample = sample_of(t1, x_true, runners[i].x(), runners[i].P());
-      if (options.on_sample) options.on_sample(static_cast<int>(i), sample);
-      if (!sample.error.allFinite() ||
-          (t1 >= kDivergenceCheckStart && sample.error.head<3>().norm() > kDivergedPositionError))
-        s.diverged = true;
-      if (t1 >= options.window_start && t1 <= options.window_end) windows[i].add(error_in_report_units(sample), sample.nees);
-    }
-    e0 = e1;
-  }
-  for (std::size_t i = 0; i < runners.size(); ++i) windows[i].write(stats[i]);
-  return stats;
+  Stream stream{truth, y, e0, x_true, process_rng, sensor_rng};
+  if (scenario.phase_mode == GpsInsScenario::PhaseMode::DoubleDifference)
+    return run_filters<models::GpsInsDoubleDifferenceMeasurement>(scenario, filters, options, stream, x0, P0);
+  return run_filters<GpsInsMeasurement>(scenario, filters, options, stream, x0, P0);
 }
 
 }  // namespace hinf::sim

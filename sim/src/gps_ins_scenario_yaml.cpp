@@ -128,7 +128,8 @@ void read_gps(const YamlMap& top, GpsInsScenario& s) {
   s.phase_sigma = g.positive("phase_sigma", s.phase_sigma);
   if (g.has("phase_sigma_unit") && g.choice("phase_sigma_unit", {"cycles", "m"}) == "m")
     s.phase_sigma *= s.carrier_frequency / models::kSpeedOfLight;
-  if (g.has("phase_mode")) g.choice("phase_mode", {"single_difference"});
+  if (g.has("phase_mode") && g.choice("phase_mode", {"single_difference", "double_difference"}) == "double_difference")
+    s.phase_mode = GpsInsScenario::PhaseMode::DoubleDifference;
   if (g.has("antennas_body")) {
     const Eigen::MatrixXd m = g.matrix("antennas_body", 3, 3, MatrixForms::RowsOnly);
     for (int k = 0; k < 3; ++k) s.antennas[k] = m.row(k).transpose();

@@ -4,7 +4,7 @@
 //    agrees with trajectory.csv (the window maxima recomputed here) and with runs.csv;
 //  - table1.csv: its row for the scenario's own p is summary.json's per-axis maxima, its row
 //    for another p that of a separate run of the scenario with that p; --no-plots;
-//  - the same seed gives the same files, with one job or two;
+//  - the same seed gives the same files, with one job or two; phase_mode: double_difference;
 //  - invalid input: exit 2 naming the key, nothing written;
 //  - (heavy) the acceptance over 20 runs of 10 000 s: the EKF's NEES in the 99 % χ²
 //    band; the EKF's and the REKF's accuracy; both REKFs at p = 0.3 without γ violation or
@@ -152,6 +152,27 @@ TEST(GpsInsScenarios, Table1RowsAreTheCampaignsOfEachFraction) {
   fs::remove_all(other);
 }
 
+// phase_mode: double_difference runs every filter on the 16-row model (193a): finite
+// statistics, and other estimates than the single differences' on the same seed.
+TEST(GpsInsScenarios, DoubleDifferencesRun) {
+  const fs::path sd = fresh_dir("sd"), dd = fresh_dir("dd");
+  ASSERT_EQ(run_scenario("gps-ins-flyaround", "--duration 600 --no-plots", sd), 0);
+  const fs::path cfg = edited_scenario("dd", {{"phase_mode: single_difference", "phase_mode: double_difference"}, kNoTable1});
+  const fs::path log = dd.string() + ".log";
+  ASSERT_EQ(run_scenario_file(cfg, "--duration 600 --no-plots --quiet", dd, log), 0) << slurp(log);
+  const YAML::Node summary = YAML::LoadFile((dd / "summary.json").string());
+  for (const std::string& f : filter_names(summary))
+    for (const auto& [key, unused] : kErrorBlocks) {
+      (void)unused;
+      EXPECT_TRUE(std::isfinite(summary["filters"][f][key].as<double>())) << f << " " << key;
+    }
+  EXPECT_NE(slurp(sd / "trajectory.csv"), slurp(dd / "trajectory.csv"));
+  fs::remove(log);
+  fs::remove(cfg);
+  fs::remove_all(sd);
+  fs::remove_all(dd);
+}
+
 // Invalid scenarios: exit 2, the message names the key, no output directory.
 TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
   const struct {
@@ -189,7 +210,7 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
 }
 
 // The acceptance (heavy: 20 runs of 10 000 s at p = 0 with the table-1 campaigns at
-// p = 0.1 and 0.3, then 20 runs at p = 0.3; ~90 s in Release).
+// p = 0.1 and 0.3, 20 runs at p = 0.3, 20 runs with double differences; ~85 s in Release).
 TEST(GpsInsAcceptance, TwentyRunsAtZeroAndThirtyPercent) {
   const fs::path p0 = fresh_dir("p0");
   ASSERT_EQ(run_scenario("gps-ins-flyaround", "--runs 20 --jobs 2 --no-plots", p0), 0);
@@ -228,4 +249,18 @@ TEST(GpsInsAcceptance, TwentyRunsAtZeroAndThirtyPercent) {
   }
   fs::remove_all(p3);
   fs::remove(cfg);
+
+  // phase_mode: double_difference, p = 0: the EKF with the correlated R of (193a) is
+  // consistent (C5's band) and meets C6
+  const fs::path dd_cfg = edited_scenario("dd20", {{"phase_mode: single_difference", "phase_mode: double_difference"}, kNoTable1});
+  const fs::path dd = fresh_dir("dd20"), dd_log = dd.string() + ".log";
+  ASSERT_EQ(run_scenario_file(dd_cfg, "--runs 20 --jobs 2 --quiet --no-plots", dd, dd_log), 0) << slurp(dd_log);
+  const YAML::Node dd_ekf = YAML::LoadFile((dd / "summary.json").string())["filters"]["ekf"];
+  EXPECT_GE(dd_ekf["nees_mean"]["mean"].as<double>(), 12.0);
+  EXPECT_LE(dd_ekf["nees_mean"]["mean"].as<double>(), 18.3);
+  EXPECT_LE(metric_median(dd_ekf["attitude_max_deg"]), 3e-3);
+  EXPECT_LE(metric_median(dd_ekf["rate_max_dps"]), 2e-5);
+  fs::remove(dd_log);
+  fs::remove(dd_cfg);
+  fs::remove_all(dd);
 }

@@ -147,6 +147,50 @@ TEST(GpsInsModel, MeasurementJacobianMatchesCentralDifferences) {
   }
 }
 
+// (193a): the double differences are each baseline's phase rows minus its satellite-0 row
+// (the gyro and pseudorange rows unchanged), their H matches central differences of their h,
+// and independent single-difference phase noise σ² becomes σ²(I + 11ᵀ) within each baseline's
+// three rows, 0 across baselines.
+TEST(GpsInsModel, DoubleDifferencesAreSatelliteDifferencesWithCorrelatedNoise) {
+  std::mt19937 g(9);
+  GpsInsMeasurement single(fast_parameters(GpsInsJacobian::Full, 1.0));
+  GpsInsDoubleDifferenceMeasurement dd(fast_parameters(GpsInsJacobian::Full, 1.0));
+  constexpr int NZ = GpsInsDoubleDifferenceMeasurement::NZ;
+  static_assert(NZ == 16);
+  for (int i = 0; i < 20; ++i) {
+    const GpsInsEpoch e = random_epoch(g);
+    single.set_epoch(e);
+    dd.set_epoch(e);
+    const State x = random_state(g, i);
+    const auto zs = single.h(x);
+    const auto zd = dd.h(x);
+    EXPECT_EQ(zd.head<7>(), zs.head<7>());
+    for (int k = 0; k < 3; ++k)
+      for (int j = 1; j < 4; ++j) EXPECT_EQ(zd(7 + 3 * k + j - 1), zs(7 + 4 * k + j) - zs(7 + 4 * k)) << k << " " << j;
+    Eigen::Matrix<double, NZ, 15> fd;
+    for (int k = 0; k < 15; ++k) {
+      State d = State::Zero();
+      d(k) = step(k);
+      fd.col(k) = (dd.h(gps_ins_boxplus(x, d)) - dd.h(gps_ins_boxplus(x, State(-d)))) / (2 * step(k));
+    }
+    const auto H = dd.H(x);
+    for (const auto& [r0, nr] : {std::pair{0, 3}, std::pair{3, 4}, std::pair{7, 9}})
+      for (int c0 = 0; c0 < 15; c0 += 3) {
+        const Eigen::MatrixXd a = fd.block(r0, c0, nr, 3), b = H.block(r0, c0, nr, 3);
+        EXPECT_LE((a - b).norm(), 1e-6 * b.norm() + 1e-12) << "state " << i << " rows " << r0 << " cols " << c0;
+      }
+  }
+  const double sigma2 = 0.0028 * 0.0028;
+  Eigen::Matrix<double, 19, 19> R = Eigen::Matrix<double, 19, 19>::Zero();
+  R.diagonal().tail<12>().setConstant(sigma2);
+  const auto D = GpsInsDoubleDifferenceMeasurement::map();
+  const Eigen::Matrix<double, 16, 16> R_dd = D * R * D.transpose();
+  Eigen::Matrix<double, 16, 16> expected = Eigen::Matrix<double, 16, 16>::Zero();
+  for (int k = 0; k < 3; ++k)
+    expected.block<3, 3>(7 + 3 * k, 7 + 3 * k) = sigma2 * (Eigen::Matrix3d::Identity() + Eigen::Matrix3d::Ones());
+  EXPECT_EQ(R_dd, expected);
+}
+
 // C3: the model's ω̇ (with W = +Ω×ν) is the derivative of ω = ω_BI − Ω − ν along a truth
 // made of the inertial attitude (Ṙ_BI = −[ω_BI×]R_BI, Euler's equation, RK4) and the frames
 // R_FR(t) = R3(n_f t) R_FR(0), R_RI(t) = R3(n t) R_RI(0).

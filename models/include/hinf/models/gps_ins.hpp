@@ -319,6 +319,48 @@ class GpsInsMeasurement {
   GpsInsEpoch epoch_;
 };
 
+// The carrier phase as double differences, docs/maths.md (193a): z_DD = D z with D the
+// 16 × 19 map that keeps the gyro and pseudorange rows and replaces each baseline's four phase
+// rows by the three differences against satellite 0 (a line bias common to the satellites
+// cancels). h, H and R are the single-difference model's through D; independent rows of R
+// become correlated ones, D R Dᵀ.
+class GpsInsDoubleDifferenceMeasurement {
+ public:
+  static constexpr int NX = 15;
+  static constexpr int NZ = 3 + kGpsInsSatellites + kGpsInsBaselines * (kGpsInsSatellites - 1);
+  using State = GpsInsMeasurement::State;
+  using Vector = Eigen::Matrix<double, NZ, 1>;
+  using Jacobian = Eigen::Matrix<double, NZ, 15>;
+  using Map = Eigen::Matrix<double, NZ, GpsInsMeasurement::NZ>;
+
+  explicit GpsInsDoubleDifferenceMeasurement(const GpsInsParameters& p) : single_(p), D_(map()) {}
+
+  void set_epoch(const GpsInsEpoch& e) { single_.set_epoch(e); }
+  const GpsInsEpoch& epoch() const { return single_.epoch(); }
+
+  Vector h(const State& x) const { return D_ * single_.h(x); }
+  Jacobian H(const State& x) const { return D_ * single_.H(x); }
+  Vector residual(const Vector& y, const Vector& y_pred) const { return y - y_pred; }
+
+  // D of (193a).
+  static Map map() {
+    constexpr int kFirstPhase = 3 + kGpsInsSatellites;
+    Map D = Map::Zero();
+    D.leftCols<kFirstPhase>().topRows<kFirstPhase>().setIdentity();
+    for (int k = 0; k < kGpsInsBaselines; ++k)
+      for (int j = 1; j < kGpsInsSatellites; ++j) {
+        const int row = kFirstPhase + k * (kGpsInsSatellites - 1) + (j - 1);
+        D(row, GpsInsMeasurement::kPhaseRow + k * kGpsInsSatellites + j) = 1;
+        D(row, GpsInsMeasurement::kPhaseRow + k * kGpsInsSatellites) = -1;
+      }
+    return D;
+  }
+
+ private:
+  GpsInsMeasurement single_;
+  Map D_;
+};
+
 // Process noise of docs/maths.md (196): Q = Δt² Γ blockdiag(σ_a² I + N_a, J⁻¹(σ_T² I + N_f)J⁻ᵀ,
 // σ_b²/Δt I) Γᵀ with N_f = (p_f max J_ii |ω_BI|²)² I (the inertia uncertainty the filter
 // assumes, recomputed at every step) and Γ = G (`zoh`: with Δt/2 I in the position rows and
@@ -359,9 +401,10 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_process_noise(const GpsInsParameter
 //   L = diag(1/s) on the σ and ω blocks (zero on ρ, ρ̇, b),
 //   A_k = κ_A Δt F_rate diag(s)  (F_rate: F's rows of the rate equation, every other row zero: the
 //         CW translation, the MRP kinematics and the bias walk are exact),
-//   C_k = κ_C H_k diag(s)  (19 × 15, passed to the runtime as the square factor [C_k 0]).
+//   C_k = κ_C H_k diag(s)  (NZ × 15, passed to the runtime as the square factor [C_k 0]).
 using GpsInsScale = Eigen::Matrix<double, 15, 1>;
-using GpsInsMeasurementUncertainty = Eigen::Matrix<double, GpsInsMeasurement::NZ, GpsInsMeasurement::NZ>;
+template <int NZ>
+using GpsInsMeasurementUncertainty = Eigen::Matrix<double, NZ, NZ>;
 
 inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_A(const Eigen::Matrix<double, 15, 15>& F_continuous,
                                                     const GpsInsScale& scale, double dt, double kappa_A) {
@@ -370,10 +413,12 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_A(const Eigen::Matrix<double, 
   return kappa_A * dt * F_rate * scale.asDiagonal();
 }
 
-inline GpsInsMeasurementUncertainty gps_ins_rekf_C(const GpsInsMeasurement::Jacobian& H, const GpsInsScale& scale,
-                                                   double kappa_C) {
-  GpsInsMeasurementUncertainty C = GpsInsMeasurementUncertainty::Zero();
-  C.leftCols<15>() = kappa_C * H * scale.asDiagonal();
+template <int NZ>
+GpsInsMeasurementUncertainty<NZ> gps_ins_rekf_C(const Eigen::Matrix<double, NZ, 15>& H, const GpsInsScale& scale,
+                                                double kappa_C) {
+  static_assert(NZ >= 15, "the square factor [C_k 0] needs NZ >= 15");
+  GpsInsMeasurementUncertainty<NZ> C = GpsInsMeasurementUncertainty<NZ>::Zero();
+  C.template leftCols<15>() = kappa_C * H * scale.asDiagonal();
   return C;
 }
 
@@ -388,7 +433,7 @@ inline Eigen::Matrix<double, 15, 15> gps_ins_rekf_L(const GpsInsScale& scale) {
 
 struct GpsInsRekfUncertainty {
   Eigen::Matrix<double, 15, 15> A, L;
-  GpsInsMeasurementUncertainty C;
+  GpsInsMeasurementUncertainty<GpsInsMeasurement::NZ> C;
 };
 
 inline GpsInsRekfUncertainty gps_ins_rekf_uncertainty(const Eigen::Matrix<double, 15, 15>& F_continuous,

@@ -61,6 +61,9 @@ struct GpsInsScenario {
   double carrier_frequency = 1575.42e6;
   double pseudorange_sigma = 1.0;  // m, on the single difference
   double phase_sigma = 0.0028;     // cycles, per row
+  // The filters' phase rows: the between-antenna differences as simulated, or their double
+  // differences against satellite 0 with the correlated covariance (docs/maths.md (193a)).
+  enum class PhaseMode { SingleDifference, DoubleDifference } phase_mode = PhaseMode::SingleDifference;
   std::array<Eigen::Vector3d, 3> antennas{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0),
                                           Eigen::Vector3d(0, 2, 0)};  // in B, m
 
