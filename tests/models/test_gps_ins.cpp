@@ -116,6 +116,18 @@ TEST_P(GpsInsPropagationTest, ProcessJacobianMatchesCentralDifferences) {
   EXPECT_GT(least_paper, 10 * worst_full);
 }
 
+// ∂h/∂Δx by central differences of h in error coordinates.
+template <class Measurement>
+Eigen::Matrix<double, Measurement::NZ, 15> h_central_differences(const Measurement& m, const State& x) {
+  Eigen::Matrix<double, Measurement::NZ, 15> fd;
+  for (int k = 0; k < 15; ++k) {
+    State d = State::Zero();
+    d(k) = step(k);
+    fd.col(k) = (m.h(gps_ins_boxplus(x, d)) - m.h(gps_ins_boxplus(x, State(-d)))) / (2 * step(k));
+  }
+  return fd;
+}
+
 // C2: H against central differences of h, block by block (the phase rows' position block is
 // ~1e-7 of their attitude block and is checked on its own).
 TEST(GpsInsModel, MeasurementJacobianMatchesCentralDifferences) {
@@ -128,12 +140,7 @@ TEST(GpsInsModel, MeasurementJacobianMatchesCentralDifferences) {
     full.set_epoch(e);
     paper.set_epoch(e);
     const State x = random_state(g, i);
-    Eigen::Matrix<double, NZ, 15> fd;
-    for (int k = 0; k < 15; ++k) {
-      State d = State::Zero();
-      d(k) = step(k);
-      fd.col(k) = (full.h(gps_ins_boxplus(x, d)) - full.h(gps_ins_boxplus(x, State(-d)))) / (2 * step(k));
-    }
+    const Eigen::Matrix<double, NZ, 15> fd = h_central_differences(full, x);
     const auto H = full.H(x);
     for (const auto& [r0, nr] : {std::pair{0, 3}, std::pair{3, 4}, std::pair{7, 12}})
       for (int c0 = 0; c0 < 15; c0 += 3) {
@@ -167,12 +174,7 @@ TEST(GpsInsModel, DoubleDifferencesAreSatelliteDifferencesWithCorrelatedNoise) {
     EXPECT_EQ(zd.head<7>(), zs.head<7>());
     for (int k = 0; k < 3; ++k)
       for (int j = 1; j < 4; ++j) EXPECT_EQ(zd(7 + 3 * k + j - 1), zs(7 + 4 * k + j) - zs(7 + 4 * k)) << k << " " << j;
-    Eigen::Matrix<double, NZ, 15> fd;
-    for (int k = 0; k < 15; ++k) {
-      State d = State::Zero();
-      d(k) = step(k);
-      fd.col(k) = (dd.h(gps_ins_boxplus(x, d)) - dd.h(gps_ins_boxplus(x, State(-d)))) / (2 * step(k));
-    }
+    const Eigen::Matrix<double, NZ, 15> fd = h_central_differences(dd, x);
     const auto H = dd.H(x);
     for (const auto& [r0, nr] : {std::pair{0, 3}, std::pair{3, 4}, std::pair{7, 9}})
       for (int c0 = 0; c0 < 15; c0 += 3) {
