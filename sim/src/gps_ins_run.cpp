@@ -61,7 +61,8 @@ struct FromSingleDifference<models::GpsInsDoubleDifferenceMeasurement> {
 
 // One configured filter: the EKF or the REKF on the 15-state model with the measurement
 // model `Measurement` (single or double differences), with Q (196) and the REKF's
-// uncertainty (197) refreshed at every step.
+// uncertainty (197) refreshed at every step (each of A, C, L the settings give explicitly is
+// held constant instead).
 template <class Measurement>
 class FilterRunner {
   static constexpr int NZm = Measurement::NZ;
@@ -86,9 +87,10 @@ class FilterRunner {
       rekf_.emplace(GpsInsProcess(params_), Measurement(params_), Q, R, f.gamma, Mat15::Zero(), ObsCovM::Zero(),
                     Mat15::Zero());
       rekf_->init(x0, P0);
-      A_.setZero();
+      A_ = f.A.value_or(Mat15::Zero());
       C_.setZero();
-      L_ = models::gps_ins_rekf_L(scale_);
+      if (f.C) C_.template leftCols<15>() = *f.C;  // [C 0]: a square factor of C Cᵀ
+      L_ = f.L.value_or(models::gps_ins_rekf_L(scale_));
     }
   }
 
@@ -109,8 +111,9 @@ class FilterRunner {
       return ekf_->predict(T_c);
     }
     rekf_->mutable_model().set_epoch(e);
-    A_ = models::gps_ins_rekf_A(rekf_->model().continuous_jacobian(x()), scale_, params_.sample_time,
-                                settings_.kappa_A);
+    if (!settings_.A)
+      A_ = models::gps_ins_rekf_A(rekf_->model().continuous_jacobian(x()), scale_, params_.sample_time,
+                                  settings_.kappa_A);
     rekf_->set_uncertainty(A_, C_, L_);
     return rekf_->predict(T_c);
   }
@@ -122,7 +125,7 @@ class FilterRunner {
       return ekf_->update(Convert::z(z));
     }
     rekf_->mutable_measurement().set_epoch(e);
-    C_ = models::gps_ins_rekf_C<NZm>(rekf_->measurement().H(x()), scale_, settings_.kappa_C);
+    if (!settings_.C) C_ = models::gps_ins_rekf_C<NZm>(rekf_->measurement().H(x()), scale_, settings_.kappa_C);
     rekf_->set_uncertainty(A_, C_, L_);
     return rekf_->update(Convert::z(z));
   }

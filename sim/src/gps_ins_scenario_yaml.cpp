@@ -152,12 +152,26 @@ void read_estimate(const YamlMap& top, GpsInsInitialError& e) {
   e.sample = m.boolean("sample_initial_error", e.sample);
 }
 
-GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name) {
+// A, C, L of a REKF given as matrices (docs/experiments.md "Seed 003"), each instead of its
+// (197) form: not with the factor it replaces.
+void read_explicit_uncertainty(const YamlMap& f, int nz, GpsInsFilterSettings& s) {
+  const auto exclusive = [&](const char* key, const char* replaced) {
+    if (f.has(key) && f.has(replaced)) f.fail(replaced, std::string("give ") + key + " or " + replaced + ", not both");
+  };
+  exclusive("A", "kappa_A");
+  exclusive("C", "kappa_C");
+  if (f.has("A")) s.A = f.matrix("A", 15, 15);
+  if (f.has("L")) s.L = f.matrix("L", 15, 15);
+  if (f.has("C")) s.C = f.matrix("C", nz, 15, MatrixForms::RowsOnly);
+}
+
+GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name, int nz) {
   for (char c : name)
     if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
       filters.fail(name, "a filter's name may hold only a-z, 0-9 and _ (it names columns and plots)");
   const YamlMap f = filters.map(name, {"type", "jacobian", "propagation", "process_noise",
-                                       "inertia_uncertainty_fraction", "gamma", "scale_factor", "kappa_A", "kappa_C"},
+                                       "inertia_uncertainty_fraction", "gamma", "scale_factor", "kappa_A", "kappa_C",
+                                       "A", "C", "L"},
                                 EmptyMap::Allowed);
   GpsInsFilterSettings s;
   s.name = name;
@@ -173,8 +187,9 @@ GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name
                                                                             : models::GpsInsPropagation::Exact;
   if (f.has("process_noise")) s.zoh_process_noise = f.choice("process_noise", {"paper_G", "zoh"}) == "zoh";
   s.inertia_uncertainty_fraction = f.nonnegative("inertia_uncertainty_fraction", s.inertia_uncertainty_fraction);
-  for (const char* key : {"gamma", "scale_factor", "kappa_A", "kappa_C"})
+  for (const char* key : {"gamma", "scale_factor", "kappa_A", "kappa_C", "A", "C", "L"})
     if (f.has(key) && s.kind != GpsInsFilterKind::Rekf) f.fail(key, "only with type: rekf");
+  read_explicit_uncertainty(f, nz, s);
   s.gamma = f.positive("gamma", s.gamma);
   s.scale_factor = f.positive("scale_factor", s.scale_factor);
   s.kappa_A = f.nonnegative("kappa_A", s.kappa_A);
@@ -182,7 +197,10 @@ GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name
   return s;
 }
 
-void read_filters(const YamlMap& top, std::vector<GpsInsFilterSettings>& out) {
+void read_filters(const YamlMap& top, const GpsInsScenario& scenario, std::vector<GpsInsFilterSettings>& out) {
+  const int nz = scenario.phase_mode == GpsInsScenario::PhaseMode::DoubleDifference
+                     ? models::GpsInsDoubleDifferenceMeasurement::NZ
+                     : models::GpsInsMeasurement::NZ;
   top.required("filters", "a map of filter names to settings (ekf, rekf, …)");
   const YAML::Node node = top.get("filters");
   if (!node.IsMap() || node.size() == 0)
@@ -192,7 +210,7 @@ void read_filters(const YamlMap& top, std::vector<GpsInsFilterSettings>& out) {
   const YamlMap filters(top.reader(), node, top.path_of("filters"));
   for (const auto& kv : node) {
     if (!kv.first.IsScalar()) top.reader().fail(kv.first, "filters: a filter's name must be a word");
-    out.push_back(read_filter(filters, kv.first.Scalar()));
+    out.push_back(read_filter(filters, kv.first.Scalar(), nz));
   }
 }
 
@@ -239,7 +257,7 @@ GpsInsExperiment parse_gps_ins_scenario(const std::string& text, const std::stri
   read_gyro(top, s);
   read_gps(top, s);
   read_estimate(top, e.options.initial_error);
-  read_filters(top, e.filters);
+  read_filters(top, s, e.filters);
   read_metrics(top, s, e.options, e.table1_fractions);
   e.plots = top.boolean("plots", e.plots);
   return e;

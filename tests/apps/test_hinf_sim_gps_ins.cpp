@@ -5,6 +5,7 @@
 //  - table1.csv: its row for the scenario's own p is summary.json's per-axis maxima, its row
 //    for another p that of a separate run of the scenario with that p; --no-plots;
 //  - the same seed gives the same files, with one job or two; phase_mode: double_difference;
+//    explicit A, C, L of the REKF;
 //  - invalid input: exit 2 naming the key, nothing written;
 //  - (heavy) the acceptance over 20 runs of 10 000 s: the EKF's NEES in the 99 % χ²
 //    band; the EKF's and the REKF's accuracy; both REKFs at p = 0.3 without γ violation or
@@ -173,6 +174,50 @@ TEST(GpsInsScenarios, DoubleDifferencesRun) {
   fs::remove_all(dd);
 }
 
+// Explicit A, C, L of a REKF (each instead of its (197) form): zero matrices make the REKF the
+// EKF, every column of trajectory.csv equal (C1 through the scenario file); an L that puts
+// L P Lᵀ above γ² makes the γ condition fail, counted in summary.json.
+TEST(GpsInsScenarios, ExplicitRekfUncertainty) {
+  const auto matrix = [](int rows, double diagonal) {
+    std::string m = "[";
+    for (int i = 0; i < rows; ++i) {
+      m += i ? ", [" : "[";
+      for (int j = 0; j < 15; ++j) m += (j ? ", " : "") + std::string(i == j && diagonal != 0 ? "1.0e6" : "0");
+      m += "]";
+    }
+    return m + "]";
+  };
+  const std::string ekf_line = "  ekf:  {jacobian: full, inertia_uncertainty_fraction: 0.0}\n";
+  const std::string zero = ekf_line + "  rekf: {A: " + matrix(15, 0) + ", L: " + matrix(15, 0) + ", C: " + matrix(19, 0) + "}\n";
+  const std::string large_L = ekf_line + "  rekf: {L: " + matrix(15, 1) + "}\n";
+  const std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
+  const std::string filters = text.substr(text.find("filters:\n") + 9, text.find("metrics:") - text.find("filters:\n") - 9);
+  for (const auto& [tag, block] : {std::pair{"zero", zero}, std::pair{"large_l", large_L}}) {
+    const fs::path cfg = edited_scenario(tag, {{filters, block}, kNoTable1});
+    const fs::path out = fresh_dir(tag), log = out.string() + ".log";
+    ASSERT_EQ(run_scenario_file(cfg, "--duration 600 --no-plots --quiet", out, log), 0) << slurp(log);
+    const YAML::Node rekf = YAML::LoadFile((out / "summary.json").string())["filters"]["rekf"];
+    if (std::string(tag) == "zero") {
+      const Columns tr = read_csv(out / "trajectory.csv");
+      int compared = 0;
+      for (std::size_t c = 0; c < tr.header.size(); ++c)
+        if (tr.header[c].rfind("ekf_", 0) == 0) {
+          const int r = tr.col("rekf_" + tr.header[c].substr(4));
+          ASSERT_GE(r, 0) << tr.header[c];
+          for (const auto& row : tr.rows) EXPECT_EQ(row[c], row[static_cast<std::size_t>(r)]) << tr.header[c];
+          ++compared;
+        }
+      EXPECT_EQ(compared, 15 + 15 + 15 + 1);
+      EXPECT_EQ(rekf["gamma_violations"].as<double>(), 0.0);
+    } else {
+      EXPECT_GT(rekf["gamma_violations"].as<double>(), 0.0);
+    }
+    fs::remove(log);
+    fs::remove(cfg);
+    fs::remove_all(out);
+  }
+}
+
 // Invalid scenarios: exit 2, the message names the key, no output directory.
 TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
   const struct {
@@ -188,6 +233,11 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
       {"duration: 10000", "duration: 10000.5", "duration = 10000.5: must be a whole multiple of sample_time"},
       {"metrics: {steady_state_window: [4000, 10000]", "metrics: {steady_state_window: [4000, 20000]",
        "metrics.steady_state_window"},
+      {"kappa_C: 1.0e-3,\n         inertia_uncertainty_fraction: 0.03}", "kappa_C: 1.0e-3, C: [[1, 2]],\n         inertia_uncertainty_fraction: 0.03}",
+       "filters.rekf.kappa_C: give C or kappa_C, not both"},
+      {"kappa_C: 1.0e-3,\n         inertia_uncertainty_fraction: 0.03}", "L: [[1, 2]],\n         inertia_uncertainty_fraction: 0.03}",
+       "filters.rekf.L"},
+      {"  ekf:  {jacobian: full", "  ekf:  {A: {diag: [1, 1]}, jacobian: full", "filters.ekf.A: only with type: rekf"},
       {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.3, 0.1]",
        "metrics.table1_products_fractions: must be increasing fractions in [0, 1), got 0.1 at index 2"},
   };

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct GpsInsFilterSettings {
   double scale_factor = 2.0;  // s = scale_factor × σ0
   double kappa_A = 0.1;
   double kappa_C = 1e-3;
+  // Explicit constant REKF uncertainty, replacing (197)'s per step: A and L 15 × 15, C NZ × 15
+  // (NZ = 19 rows of single differences, 16 of double differences; passed as [C 0]).
+  std::optional<Eigen::Matrix<double, 15, 15>> A, L;
+  std::optional<Eigen::MatrixXd> C;
 };
 
 // The initial estimate's 1σ (and P0 = their squares); b̂(0) = 0.
