@@ -234,6 +234,11 @@ void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions&
       if (p(i) < 0 || p(i) >= 1 || (i > 0 && p(i) <= p(i - 1)))
         m.fail("table1_products_fractions", "must be increasing fractions in [0, 1), got " + number_text(p(i)) +
                                                 " at index " + std::to_string(i));
+      GpsInsScenario with_p = s;
+      with_p.inertia_products_fraction = p(i);
+      if (Eigen::LLT<Eigen::Matrix3d>(with_p.inertia_true()).info() != Eigen::Success)
+        m.fail("table1_products_fractions", number_text(p(i)) + " at index " + std::to_string(i) +
+                                                " makes the true inertia not positive definite");
       table1_fractions.push_back(p(i));
     }
   }

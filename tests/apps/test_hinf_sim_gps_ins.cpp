@@ -238,6 +238,8 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
       {"kappa_C: 1.0e-3,\n         inertia_uncertainty_fraction: 0.03}", "L: [[1, 2]],\n         inertia_uncertainty_fraction: 0.03}",
        "filters.rekf.L"},
       {"  ekf:  {jacobian: full", "  ekf:  {A: {diag: [1, 1]}, jacobian: full", "filters.ekf.A: only with type: rekf"},
+      {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.1, 0.9]",
+       "metrics.table1_products_fractions: 0.9 at index 2 makes the true inertia not positive definite"},
       {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.3, 0.1]",
        "metrics.table1_products_fractions: must be increasing fractions in [0, 1), got 0.1 at index 2"},
   };
