@@ -334,7 +334,7 @@ TEST(GpsInsModel, ProcessNoiseAndRekfUncertaintyHaveTheDocumentedBlocks) {
   // A_k = κ_A Δt F_rate diag(s): only the rate equation's rows (197)
   EXPECT_EQ(u.A.topRows<9>().norm(), 0.0);
   EXPECT_EQ(u.A.bottomRows<3>().norm(), 0.0);
-  const auto F_rate = model.continuous_jacobian(x).middleRows<3>(ix::kRate);
+  const Eigen::Matrix<double, 3, 15> F_rate = model.continuous_jacobian(x).middleRows<3>(ix::kRate);
   EXPECT_GT(F_rate.norm(), 0.0);
   EXPECT_LE((u.A.middleRows<3>(ix::kRate) - 0.1 * 2.0 * F_rate * 2.0).norm(), 1e-15 * F_rate.norm());
   State L_diag = State::Zero();
