@@ -243,14 +243,8 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
       {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.3, 0.1]",
        "metrics.table1_products_fractions: must be increasing fractions in [0, 1), got 0.1 at index 2"},
   };
-  const std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
   for (const auto& c : cases) {
-    std::string bad = text;
-    const auto at = bad.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    bad.replace(at, std::string(c.from).size(), c.to);
-    const fs::path cfg = fs::temp_directory_path() / ("gps_ins_bad_" + std::to_string(::getpid()) + ".yaml");
-    std::ofstream(cfg) << bad;
+    const fs::path cfg = edited_scenario("bad", {{c.from, c.to}});
     const fs::path out = fresh_dir("bad");
     const fs::path log = out.string() + ".log";
     EXPECT_EQ(run_scenario_file(cfg, "", out, log), 2) << c.to;
