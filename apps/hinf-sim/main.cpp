@@ -143,11 +143,12 @@ int run(int argc, char** argv) {
   }
 
   using namespace hinf::sim;
-  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, or the Hill experiments
+  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, `gyroless_attitude`, or the Hill experiments
     const std::string text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
     const std::string family = scenario_family(text, o.scenario_path);
     if (family == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
     if (family == "gps_ins_relative") return hinf::sim_cli::run_gps_ins(o, text);
+    if (family == "gyroless_attitude") return hinf::sim_cli::run_gyroless_attitude(o, text);
   } catch (const hinf::Error& e) {
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());

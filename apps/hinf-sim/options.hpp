@@ -28,4 +28,7 @@ int run_tumbling_hold(const Options& o, const std::string& scenario_text);
 // A `scenario: gps_ins_relative` run (docs/experiments.md "Seed 003"): its exit code.
 int run_gps_ins(const Options& o, const std::string& scenario_text);
 
+// A `scenario: gyroless_attitude` run (docs/experiments.md "Seed 002"): its exit code.
+int run_gyroless_attitude(const Options& o, const std::string& scenario_text);
+
 }  // namespace hinf::sim_cli

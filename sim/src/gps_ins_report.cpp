@@ -33,33 +33,6 @@ std::vector<std::pair<const char*, double>> metric_list(const GpsInsFilterStatis
           {"failed_steps", static_cast<double>(s.failed_steps)}, {"diverged", s.diverged ? 1.0 : 0.0}};
 }
 
-// The median of the finite values (NaN if none).
-double finite_median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  return 0.5 * (v[(v.size() - 1) / 2] + v[v.size() / 2]);
-}
-
-// {mean, std, min, max, median, p90, count} over the runs with a finite value (a filter
-// whose state went non-finite has none); p90 the nearest-rank 90th percentile; null if none.
-Json stats_json(const std::vector<double>& all) {
-  std::vector<double> v;
-  for (double x : all)
-    if (std::isfinite(x)) v.push_back(x);
-  if (v.empty()) return nullptr;
-  std::vector<std::optional<double>> o(v.begin(), v.end());
-  Json j = json_stats(o);
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  Json out = Json::object();
-  for (const char* k : {"mean", "std", "min", "max"}) out[k] = j[k];
-  out["median"] = json_num(finite_median(v));
-  out["p90"] = json_num(v[std::min(n - 1, static_cast<std::size_t>(std::ceil(0.9 * n)) - 1)]);
-  out["count"] = n;
-  return out;
-}
-
 // The figures of write_gps_ins_plots: file, quantity, first error index, unit.
 struct GpsInsFigure {
   const char* file;

@@ -10,12 +10,15 @@
 #include <new>
 #include <random>
 
+#include "hinf/runtime/augmented_ekf.hpp"
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/models/cartesian_position.hpp"
 #include "hinf/models/gps_ins.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
+#include "hinf/models/rigid_body.hpp"
+#include "hinf/models/star_tracker.hpp"
 #include "hinf/runtime/rekf.hpp"
 
 namespace {
@@ -239,4 +242,40 @@ TEST(Allocations, GpsInsEkfAndRekfStepsDoNotAllocate) {
   }
   EXPECT_EQ(n, 0);
   EXPECT_EQ(not_ok, 0);
+}
+
+// The augmented EKF of seed 002 with each prior-covariance policy: the constructors allocate
+// (AdaptiveQ's window), step() does not — the RK4 prediction, Φ = exp(FΔt), the fading
+// factors, the adaptive law and the Joseph update included.
+template <class Policy>
+long augmented_ekf_step_allocations(const Policy& policy) {
+  using Process = hinf::models::RigidBodyAttitudeProcess;
+  using Tracker = hinf::models::StarTrackerMeasurement<2>;
+  hinf::models::RigidBodyParameters p;
+  p.inertia = Eigen::Vector3d(20, 18, 15).asDiagonal();
+  const Process model(p);
+  hinf::runtime::AugmentedEkf<Process, Tracker, Policy> f(
+      model, Tracker({Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, 1)}), model.discrete_process_noise(1e-14),
+      Eigen::Matrix<double, 6, 6>::Identity() * 1e-10, policy);
+  Process::State x0 = Process::State::Zero();
+  x0(3) = 1;
+  f.init(x0, Eigen::Matrix<double, 9, 9>::Identity() * 1e-6);
+  Tracker::Vector y;
+  y << 1, 1e-5, -2e-5, 3e-5, 0, 1;
+  CountScope s;
+  for (int k = 0; k < 200; ++k) f.step(Eigen::Vector3d::Zero(), y);
+  return s.count();
+}
+
+TEST(Allocations, AugmentedEkfStepsDoNotAllocate) {
+  EXPECT_EQ(augmented_ekf_step_allocations(hinf::runtime::PlainPrior<9, 6>{}), 0);
+  hinf::runtime::StrongTrackingSettings<9> st;
+  st.weakening = 2;
+  EXPECT_EQ(augmented_ekf_step_allocations(hinf::runtime::StrongTracking<9, 6>(st)), 0);
+  hinf::runtime::AdaptiveQSettings a;
+  a.state_offset = 7;
+  a.error_offset = 6;
+  a.window = 5;
+  a.initial = 1e-14;
+  EXPECT_EQ(augmented_ekf_step_allocations(hinf::runtime::AdaptiveQ<9, 6, 3>(a)), 0);
 }

@@ -17,6 +17,11 @@
 //  * GammaConditionViolated (Rekf only): gamma^2 I - L P L^T is not positive definite,
 //    so M(P) does not exist (docs/maths.md (99)). The step is skipped; x and P unchanged; the
 //    smallest eigenvalue of gamma^2 I - L P L^T is available from the filter.
+//  * FadingFactorCapped / FadingTraceGuard (AugmentedEkf with StrongTracking only): the step
+//    was taken, with a fading factor held at its cap λ_max, or with every factor 1 because
+//    Σ α_i M_ii ≤ 0 (docs/maths.md (211)).
+//  * StateNotFinite (AugmentedEkf): the step produced a non-finite x or P; it is undone and
+//    the filter stopped: every later step returns Stopped and changes nothing.
 #pragma once
 
 namespace hinf::runtime {
@@ -30,6 +35,10 @@ enum class FilterStatus {
   CovarianceNotPD,
   CovarianceReset,
   GammaConditionViolated,
+  FadingFactorCapped,
+  FadingTraceGuard,
+  StateNotFinite,
+  Stopped,
 };
 
 // The REKF reports through the same enum (RekfStatus::GammaConditionViolated etc.).
@@ -50,6 +59,10 @@ inline const char* to_string(FilterStatus s) {
     case FilterStatus::CovarianceNotPD: return "covariance not positive definite";
     case FilterStatus::CovarianceReset: return "covariance not positive definite; reset to P0";
     case FilterStatus::GammaConditionViolated: return "gamma^2 I - L P L^T not positive definite (step skipped)";
+    case FilterStatus::FadingFactorCapped: return "a strong-tracking fading factor reached lambda_max (step taken)";
+    case FilterStatus::FadingTraceGuard: return "sum of alpha_i M_ii not positive: fading factors set to 1 (step taken)";
+    case FilterStatus::StateNotFinite: return "the step made x or P non-finite: undone, the filter is stopped";
+    case FilterStatus::Stopped: return "the filter is stopped after a non-finite state (step skipped)";
   }
   return "unknown";
 }

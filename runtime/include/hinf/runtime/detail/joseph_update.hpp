@@ -23,8 +23,10 @@ namespace hinf::runtime::detail {
 //     x <- x + K nu                  (or the model's x ⊞ K nu: `correct`, kalman_core.hpp)
 //     P <- (I - K H) Pbar (I - K H)^T + K Rbar K^T      (Joseph form), symmetrised
 // On failure (S not PD, or NIS above gate) x and P are untouched.
-template <int NX, int NZ, class Correct>
-FilterStatus joseph_update(Eigen::Matrix<double, NX, 1>& x, Eigen::Matrix<double, NX, NX>& P,
+// x has NS ≥ NX entries when the model's state is not its error (kalman_core.hpp); only
+// `correct` touches it.
+template <int NX, int NZ, class Correct, class StateVector>
+FilterStatus joseph_update(StateVector& x, Eigen::Matrix<double, NX, NX>& P,
                            const Eigen::Matrix<double, NX, NX>& Pbar, const Eigen::Matrix<double, NZ, NX>& H,
                            const Eigen::Matrix<double, NZ, NZ>& Rbar, const Eigen::Matrix<double, NZ, 1>& nu,
                            double nis_gate, double& nis, Eigen::Matrix<double, NZ, NZ>& S,

@@ -12,6 +12,10 @@
 //   void normalise(State& x, StateCov& P) const;            a chart switch after every step
 // (the state x then carries the estimate, P the covariance of its error Δx). Without them the
 // code is the additive update, unchanged: x ← x + K ν computed as before, bit for bit.
+//
+// A model whose state has more coordinates than its error (a unit quaternion: 4 numbers, 3
+// error angles) declares `static constexpr int NS` beside NX: x is then NS × 1, P, F, H and
+// K are sized by NX, and boxplus (x, Δx of size NX) is required. Without NS, NS = NX.
 #pragma once
 
 #include <Eigen/Dense>
@@ -28,13 +32,19 @@
 
 namespace hinf::runtime::detail {
 
-template <class Model, class State, class = void>
+template <class Model, class State, class Error, class = void>
 struct HasBoxplus : std::false_type {};
-template <class Model, class State>
-struct HasBoxplus<Model, State,
+template <class Model, class State, class Error>
+struct HasBoxplus<Model, State, Error,
                   std::void_t<decltype(std::declval<const Model&>().boxplus(std::declval<const State&>(),
-                                                                            std::declval<const State&>()))>>
+                                                                            std::declval<const Error&>()))>>
     : std::true_type {};
+
+// NS of the model if it declares one, else NX.
+template <class Model, class = void>
+struct StateDimension : std::integral_constant<int, Model::NX> {};
+template <class Model>
+struct StateDimension<Model, std::void_t<decltype(Model::NS)>> : std::integral_constant<int, Model::NS> {};
 
 template <class Model, class State, class Cov, class = void>
 struct HasNormalise : std::false_type {};
@@ -48,12 +58,16 @@ template <class Model, class Measurement>
 class KalmanCore {
  public:
   static constexpr int NX = Model::NX;
+  static constexpr int NS = StateDimension<Model>::value;
   static constexpr int NU = Model::NU;
   static constexpr int NZ = Measurement::NZ;
   static_assert(NX > 0 && NU > 0 && NZ > 0, "Kalman filter: dimensions must be positive");
   static_assert(Measurement::NX == Model::NX, "Kalman filter: model and measurement state dimensions differ");
+  static_assert(NS == NX || HasBoxplus<Model, Eigen::Matrix<double, NS, 1>, Eigen::Matrix<double, NX, 1>>::value,
+                "Kalman filter: a model with NS != NX must provide boxplus(x, dx)");
 
-  using State = Eigen::Matrix<double, NX, 1>;
+  using State = Eigen::Matrix<double, NS, 1>;
+  using ErrorState = Eigen::Matrix<double, NX, 1>;
   using Input = Eigen::Matrix<double, NU, 1>;
   using Observation = Eigen::Matrix<double, NZ, 1>;
   using StateCov = Eigen::Matrix<double, NX, NX>;
@@ -155,8 +169,8 @@ class KalmanCore {
     nu_ = meas_.residual(y, y_pred);
     const FilterStatus s = joseph_update<NX, NZ>(x_, P_, Pbar, H, Rbar, nu_, nis_gate_, nis_, S_, K_,
                                                  [this](State& x, const Gain& K, const Observation& nu) {
-                                                   if constexpr (HasBoxplus<Model, State>::value) {
-                                                     const State dx = K * nu;
+                                                   if constexpr (HasBoxplus<Model, State, ErrorState>::value) {
+                                                     const ErrorState dx = K * nu;
                                                      x = model_.boxplus(x, dx);
                                                    } else {
                                                      (void)model_;  // `this` is captured for boxplus only
