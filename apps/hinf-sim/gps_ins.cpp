@@ -23,12 +23,7 @@ using namespace hinf::sim;
 GpsInsExperiment load_experiment(const Options& o, const std::string& text) {
   GpsInsExperiment e = parse_gps_ins_scenario(text, o.scenario_path);
   if (o.duration) {
-    const double k = *o.duration / e.scenario.sample_time;
-    if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
-      throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(*o.duration) +
-                                                           ": must be a whole multiple of sample_time " +
-                                                           hinf::number_text(e.scenario.sample_time));
-    e.scenario.duration = *o.duration;
+    e.scenario.duration = checked_duration(*o.duration, e.scenario.sample_time);
     e.options.window_end = std::min(e.options.window_end, e.scenario.duration);
     if (e.options.window_start >= e.options.window_end) e.options.window_start = e.options.window_end / 2;
   }
@@ -91,32 +86,16 @@ void write_outputs(const Options& o, const GpsInsExperiment& e, const std::vecto
 
 int run_gps_ins(const Options& o, const std::string& text) {
   GpsInsExperiment e;
-  try {
-    e = load_experiment(o, text);
-  } catch (const hinf::Error& err) {
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(err.code());
-  }
-  std::vector<std::vector<GpsInsSample>> samples(e.filters.size());
+  std::vector<std::vector<GpsInsSample>> samples;
   Campaign stats;
   std::vector<Campaign> table1;
-  try {
-    stats = run_campaign(o, e, e.scenario, &samples);
-    table1 = run_table1_campaigns(o, e, stats);
-  } catch (const std::invalid_argument& err) {  // a runtime filter refusing its settings
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  }
-  try {
-    write_outputs(o, e, samples, stats, table1);
-  } catch (const hinf::Error& err) {
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  } catch (const PlotError& err) {
-    std::cerr << "hinf-sim: error: plots: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  }
-  return 0;
+  return run_stages([&] { e = load_experiment(o, text); },
+                    [&] {
+                      samples.resize(e.filters.size());
+                      stats = run_campaign(o, e, e.scenario, &samples);
+                      table1 = run_table1_campaigns(o, e, stats);
+                    },
+                    [&] { write_outputs(o, e, samples, stats, table1); });
 }
 
 }  // namespace hinf::sim_cli

@@ -23,12 +23,7 @@ using namespace hinf::sim;
 GyrolessExperiment load_experiment(const Options& o, const std::string& text) {
   GyrolessExperiment e = parse_gyroless_scenario(text, o.scenario_path);
   if (o.duration) {
-    const double k = *o.duration / e.scenario.sample_time;
-    if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
-      throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(*o.duration) +
-                                                           ": must be a whole multiple of sample_time " +
-                                                           hinf::number_text(e.scenario.sample_time));
-    e.scenario.duration = *o.duration;
+    e.scenario.duration = checked_duration(*o.duration, e.scenario.sample_time);
     if (e.options.window_start >= e.scenario.duration) e.options.window_start = e.scenario.duration / 2;
   }
   return e;
@@ -71,30 +66,14 @@ void write_outputs(const Options& o, const GyrolessExperiment& e,
 
 int run_gyroless_attitude(const Options& o, const std::string& text) {
   GyrolessExperiment e;
-  try {
-    e = load_experiment(o, text);
-  } catch (const hinf::Error& err) {
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(err.code());
-  }
-  std::vector<std::vector<GyrolessSample>> samples(e.filters.size());
+  std::vector<std::vector<GyrolessSample>> samples;
   Campaign stats;
-  try {
-    stats = run_campaign(o, e, samples);
-  } catch (const std::invalid_argument& err) {  // a runtime filter refusing its settings
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  }
-  try {
-    write_outputs(o, e, samples, stats);
-  } catch (const hinf::Error& err) {
-    std::cerr << "hinf-sim: error: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  } catch (const PlotError& err) {
-    std::cerr << "hinf-sim: error: plots: " << err.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  }
-  return 0;
+  return run_stages([&] { e = load_experiment(o, text); },
+                    [&] {
+                      samples.resize(e.filters.size());
+                      stats = run_campaign(o, e, samples);
+                    },
+                    [&] { write_outputs(o, e, samples, stats); });
 }
 
 }  // namespace hinf::sim_cli

@@ -199,6 +199,43 @@ void create_output_directory(const std::string& dir) {
     throw hinf::Error(hinf::ErrorCode::InvalidInput, "cannot create the output directory '" + dir + "': " + ec.message());
 }
 
+double checked_duration(double duration, double sample_time) {
+  const double k = duration / sample_time;
+  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
+    throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(duration) +
+                                                         ": must be a whole multiple of sample_time " +
+                                                         hinf::number_text(sample_time));
+  return duration;
+}
+
+int run_stages(const std::function<void()>& load, const std::function<void()>& simulate,
+               const std::function<void()>& write) {
+  const auto fail = [](const std::string& what, hinf::ErrorCode code) {
+    std::cerr << "hinf-sim: error: " << what << "\n";
+    return hinf::exit_code(code);
+  };
+  try {
+    load();
+  } catch (const hinf::Error& e) {
+    return fail(e.what(), e.code());
+  }
+  try {
+    simulate();
+  } catch (const std::invalid_argument& e) {
+    return fail(e.what(), hinf::ErrorCode::InvalidInput);
+  } catch (const hinf::sim::SimulationError& e) {
+    return fail(e.what(), hinf::ErrorCode::NumericalFailure);
+  }
+  try {
+    write();
+  } catch (const hinf::Error& e) {
+    return fail(e.what(), hinf::ErrorCode::InvalidInput);
+  } catch (const hinf::sim::PlotError& e) {
+    return fail(std::string("plots: ") + e.what(), hinf::ErrorCode::InvalidInput);
+  }
+  return 0;
+}
+
 std::function<void(long, long)> progress_bar(bool enabled) {
   if (!enabled) return nullptr;
   return [](long done, long total) {

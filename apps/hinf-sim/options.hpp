@@ -19,6 +19,17 @@ struct Options {
 // Creates the run directory (and its parents): Error(InvalidInput) naming it if it cannot.
 void create_output_directory(const std::string& dir);
 
+// --duration T for a scenario sampled at `sample_time`: T if it is a whole number (≥ 1) of
+// samples, else Error(InvalidInput) naming --duration.
+double checked_duration(double duration, double sample_time);
+
+// A scenario family's three stages, each error reported on stderr with its exit code: load
+// (hinf::Error: its code), simulate (std::invalid_argument — a runtime filter or controller
+// refusing its settings — exit 2; SimulationError exit 4), write (hinf::Error, PlotError:
+// exit 2). 0 when all three complete.
+int run_stages(const std::function<void()>& load, const std::function<void()>& simulate,
+               const std::function<void()>& write);
+
 // Monte-Carlo progress on stderr (a bar), or nothing.
 std::function<void(long, long)> progress_bar(bool enabled);
 

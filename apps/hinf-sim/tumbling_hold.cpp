@@ -79,35 +79,17 @@ int run_tumbling_hold(const Options& o, const std::string& text) {
   HoldSummaryContext context;
   std::string controller_yaml;
   HoldSetup setup;
-  try {
-    setup = load_hold_setup(o, text, context, controller_yaml);
-  } catch (const hinf::Error& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(e.code());
-  }
   std::vector<HoldRunResult> results(static_cast<std::size_t>(o.runs));
-  try {
-    for_each_run(
-        o.runs, o.jobs,
-        [&](long i) { results[static_cast<std::size_t>(i)] = simulate_hold_run(setup, run_seed(o.seed, i), i == 0); },
-        progress_bar(!o.quiet && o.runs > 1));
-  } catch (const std::invalid_argument& e) {  // runtime controller or modulator refusing its settings
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  } catch (const SimulationError& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::NumericalFailure);
-  }
-  try {
-    write_hold_outputs(o, setup, results, context, controller_yaml);
-  } catch (const hinf::Error& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  } catch (const PlotError& e) {
-    std::cerr << "hinf-sim: error: plots: " << e.what() << "\n";
-    return hinf::exit_code(hinf::ErrorCode::InvalidInput);
-  }
-  return 0;
+  return run_stages([&] { setup = load_hold_setup(o, text, context, controller_yaml); },
+                    [&] {
+                      for_each_run(
+                          o.runs, o.jobs,
+                          [&](long i) {
+                            results[static_cast<std::size_t>(i)] = simulate_hold_run(setup, run_seed(o.seed, i), i == 0);
+                          },
+                          progress_bar(!o.quiet && o.runs > 1));
+                    },
+                    [&] { write_hold_outputs(o, setup, results, context, controller_yaml); });
 }
 
 }  // namespace hinf::sim_cli

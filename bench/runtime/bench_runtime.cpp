@@ -8,11 +8,14 @@
 #include <random>
 #include <vector>
 
+#include "hinf/runtime/augmented_ekf.hpp"
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/models/cartesian_position.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
+#include "hinf/models/rigid_body.hpp"
+#include "hinf/models/star_tracker.hpp"
 #include "hinf/runtime/rekf.hpp"
 
 namespace {
@@ -158,6 +161,77 @@ void BM_RekfStep_Hill_Cartesian(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_RekfStep_Hill_Cartesian);
+
+// Seed 002's gyroless attitude filter (docs/maths.md §31): the plain Ekf's predict + update
+// on the rigid body and star tracker, and the AugmentedEkf's step with each policy on the
+// same stream — the policy's cost is the difference.
+using RigidBody = hinf::models::RigidBodyAttitudeProcess;
+using StarTracker2 = hinf::models::StarTrackerMeasurement<2>;
+RigidBody rigid_body() {
+  hinf::models::RigidBodyParameters p;
+  p.inertia = Eigen::Vector3d(20, 18, 15).asDiagonal();
+  return RigidBody(p);
+}
+RigidBody::State rigid_body_x0() {
+  RigidBody::State x = RigidBody::State::Zero();
+  x(3) = 1;
+  return x;
+}
+StarTracker2::Vector star_tracker_y(const Gains& G, int k) {
+  StarTracker2::Vector y;
+  y << 1, 0, 0, 0, 0, 1;
+  y.head<3>() += 1e-5 * G.ys[k & (kTable - 1)];
+  y.tail<3>() -= 1e-5 * G.ys[(k + 7) & (kTable - 1)];
+  return y;
+}
+const Eigen::Matrix<double, 6, 6> kStarTrackerR = Eigen::Matrix<double, 6, 6>::Identity() * 1e-10;
+const Eigen::Matrix<double, 9, 9> kRigidBodyP0 = Eigen::Matrix<double, 9, 9>::Identity() * 1e-6;
+
+void BM_EkfStep_RigidBody_StarTracker(benchmark::State& st) {
+  const Gains& G = gains();
+  const RigidBody model = rigid_body();
+  Ekf<RigidBody, StarTracker2> ekf(model, StarTracker2({Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, 1)}),
+                                   model.discrete_process_noise(1e-14), kStarTrackerR);
+  ekf.init(rigid_body_x0(), kRigidBodyP0);
+  int k = 0;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(ekf.predict(Eigen::Vector3d::Zero()));
+    benchmark::DoNotOptimize(ekf.update(star_tracker_y(G, k++)));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_EkfStep_RigidBody_StarTracker);
+
+template <class Policy>
+void augmented_ekf_steps(benchmark::State& st, const Policy& policy) {
+  const Gains& G = gains();
+  const RigidBody model = rigid_body();
+  AugmentedEkf<RigidBody, StarTracker2, Policy> f(model, StarTracker2({Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, 1)}),
+                                                  model.discrete_process_noise(1e-14), kStarTrackerR, policy);
+  f.init(rigid_body_x0(), kRigidBodyP0);
+  int k = 0;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(f.step(Eigen::Vector3d::Zero(), star_tracker_y(G, k++)));
+    benchmark::ClobberMemory();
+  }
+}
+void BM_AugmentedEkfStep_Plain(benchmark::State& st) { augmented_ekf_steps(st, PlainPrior<9, 6>{}); }
+void BM_AugmentedEkfStep_StrongTracking(benchmark::State& st) {
+  StrongTrackingSettings<9> s;
+  s.weakening = 2;
+  s.alpha << 1, 1, 1, 1, 1, 1, 2, 2, 2;
+  augmented_ekf_steps(st, StrongTracking<9, 6>(s));
+}
+void BM_AugmentedEkfStep_AdaptiveQ(benchmark::State& st) {
+  AdaptiveQSettings a;
+  a.state_offset = 7;
+  a.error_offset = 6;
+  a.initial = 1e-14;
+  augmented_ekf_steps(st, AdaptiveQ<9, 6, 3>(a));
+}
+BENCHMARK(BM_AugmentedEkfStep_Plain);
+BENCHMARK(BM_AugmentedEkfStep_StrongTracking);
+BENCHMARK(BM_AugmentedEkfStep_AdaptiveQ);
 
 }  // namespace
 

@@ -150,12 +150,7 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
     std::vector<std::vector<std::pair<const char*, double>>> per_run;  // [run][metric]
     for (const auto& run : stats) per_run.push_back(metric_list(run[f]));
     Json m = Json::object();
-    for (std::size_t k = 0; k < per_run.front().size(); ++k) {
-      std::vector<double> values;
-      for (const auto& run : per_run) values.push_back(run[k].second);
-      m[per_run.front()[k].first] =
-          stats.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
-    }
+    add_metrics_json(m, per_run);
     filters[e.filters[f].name] = m;
   }
   j["filters"] = filters;

@@ -16,21 +16,8 @@ namespace {
 using models::kRadiansPerDegree;
 constexpr double kDegreesPerHour = kRadiansPerDegree / 3600;  // rad/s per °/h
 
-// The most samples a run may take (1e7: 116 days at 1 s; one run of 1e4 samples takes
-// about 0.7 s on the development machine).
-constexpr double kMaxSamples = 1e7;
-
-
 void read_timing(const YamlMap& top, GpsInsScenario& s) {
-  top.required("duration", "s");
-  s.duration = top.positive("duration");
-  s.sample_time = top.positive("sample_time", s.sample_time);
-  const double k = s.duration / s.sample_time;
-  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
-    top.fail_value("duration", s.duration, "must be a whole multiple of sample_time " + number_text(s.sample_time));
-  if (k > kMaxSamples) top.fail_value("duration", s.duration, "needs more than 1e7 samples");
-  s.truth_substeps = top.has("truth_substeps") ? top.integer("truth_substeps") : s.truth_substeps;
-  if (s.truth_substeps < 1 || s.truth_substeps > 1000) top.fail("truth_substeps", "must be in 1…1000");
+  read_sampled_timing(top, s.duration, s.sample_time, s.truth_substeps);
 }
 
 void read_orbit(const YamlMap& top, GpsInsScenario& s) {

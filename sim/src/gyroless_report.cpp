@@ -192,12 +192,7 @@ std::string format_gyroless_summary_json(const GyrolessExperiment& e,
                 : e.filters[f].kind == GyrolessFilterKind::Astekf ? "astekf"
                                                                   : "aaekf";
     if (e.filters[f].kind != GyrolessFilterKind::Aaekf) m["Q"] = json_num(e.filters[f].Q);
-    for (std::size_t k = 0; k < per_run.front().size(); ++k) {
-      std::vector<double> values;
-      for (const auto& run : per_run) values.push_back(run[k].second);
-      m[per_run.front()[k].first] =
-          stats.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
-    }
+    add_metrics_json(m, per_run);
     filters[e.filters[f].name] = m;
   }
   j["filters"] = filters;

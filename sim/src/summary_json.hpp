@@ -72,6 +72,18 @@ inline Json stats_json(const std::vector<double>& all) {
   return out;
 }
 
+// One filter's metrics into `m`, per_run[r] = its (name, value) list in run r (the same names in
+// every run): the value for one run (null if not finite), stats_json over several.
+template <class Name>
+void add_metrics_json(Json& m, const std::vector<std::vector<std::pair<Name, double>>>& per_run) {
+  for (std::size_t k = 0; k < per_run.front().size(); ++k) {
+    std::vector<double> values;
+    for (const auto& run : per_run) values.push_back(run[k].second);
+    m[per_run.front()[k].first] =
+        per_run.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
+  }
+}
+
 // The keys every summary.json starts with.
 inline Json summary_header(const std::string& scenario_path, std::uint64_t seed, std::size_t runs, double duration) {
   Json j = Json::object();
