@@ -165,6 +165,22 @@ TEST(GyrolessScenario, InvalidValuesExitTwoNamingTheKey) {
       {"steady_state_start: 600", "steady_state_start: 6000", "steady_state_start"},
       {"frame_model: orbit_as_inertial", "frame_model: physical", "frame_model"},
       {"attitude_error: multiplicative", "attitude_error: additive", "attitude_error"},
+      {"q_discretisation: first_order", "q_discretisation: van_loan", "q_discretisation"},
+      {"orbital_rate_deg_s: 0.06148839356680", "orbital_rate_deg_s: -0.06", "orbital_rate_deg_s"},
+      {"amplitude: [1.0e-5, 1.0e-5, 1.0e-5]", "amplitude: [1.0e-5, -1.0e-5, 1.0e-5]", "amplitude"},
+      {"wheel_momentum: [0, 0, 0]", "wheel_momentum: [0, 0, .nan]", "wheel_momentum"},
+      {"w0: [0, 0, 0]}", "w0: [0, 0]}", "truth.w0"},
+      {"torque0: [0, 0, 0]", "torque0: [0, 0, 0, 0]", "torque0"},
+      {"sigma: {attitude: 1.0e-2", "sigma: {attitude: 0", "sigma.attitude"},
+      {"rate: 1.0e-4, torque", "rate: -1.0e-4, torque", "sigma.rate"},
+      {"torque: 1.0e-5}", "torque: .inf}", "sigma.torque"},
+      {"sample_initial_error: false", "sample_initial_error: maybe", "sample_initial_error"},
+      {"scale: 1.0, epsilon: 3.0, window: 30, law: diag", "scale: 0, epsilon: 3.0, window: 30, law: diag", "scale"},
+      {"aekf: {type: aekf, Q: 1.0e-14}", "aekf: {type: ukf, Q: 1.0e-14}", "type"},
+      {"truth_substeps: 10", "truth_substeps: 0", "truth_substeps"},
+      {"duration: 5855 ", "duration: 5855.5 ", "duration"},
+      {"sample_time: 1.0 ", "sample_time: 0 ", "sample_time"},
+      {"steady_state_start: 600}", "steady_state_start: 600, window: 3}", "window"},
   };
   for (const auto& [from, to, key] : cases) {
     const fs::path cfg = edited_scenario("bad", {{from, to}});
