@@ -12,7 +12,9 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sim_cli_test {
@@ -78,6 +80,21 @@ inline Columns read_csv(const fs::path& p) {
     c.rows.push_back(row);
   }
   return c;
+}
+
+// configs/scenarios/NAME.yaml with each `from` replaced by its `to` (each must occur), written
+// to a temporary file named for the tag and the process; throws std::runtime_error otherwise.
+inline fs::path edited_scenario(const std::string& name, const std::string& tag,
+                                const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / (name + ".yaml"));
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::runtime_error("not in the scenario: " + from);
+    text.replace(at, from.size(), to);
+  }
+  const fs::path cfg = fs::temp_directory_path() / (name + "_" + tag + "_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(cfg) << text;
+  return cfg;
 }
 
 inline double metric_max(const YAML::Node& m) { return m.IsMap() ? m["max"].as<double>() : m.as<double>(); }

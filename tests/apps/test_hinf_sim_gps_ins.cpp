@@ -42,15 +42,7 @@ std::vector<std::string> filter_names(const YAML::Node& summary) {
 
 // The shipped scenario with `from` replaced by `to`, written to a temporary file.
 fs::path edited_scenario(const std::string& tag, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "gps-ins-flyaround.yaml");
-  for (const auto& [from, to] : edits) {
-    const auto at = text.find(from);
-    if (at == std::string::npos) throw std::runtime_error("not in the scenario: " + from);
-    text.replace(at, from.size(), to);
-  }
-  const fs::path cfg = fs::temp_directory_path() / ("gps_ins_" + tag + "_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(cfg) << text;
-  return cfg;
+  return sim_cli_test::edited_scenario("gps-ins-flyaround", tag, edits);
 }
 const std::pair<std::string, std::string> kNoTable1 = {",\n          table1_products_fractions: [0, 0.1, 0.3]}", "}"};
 }  // namespace

@@ -29,15 +29,7 @@ fs::path fresh_dir(const std::string& name) { return sim_cli_test::fresh_dir("gy
 
 // The shipped scenario with `from` replaced by `to`, written to a temporary file.
 fs::path edited_scenario(const std::string& tag, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / (std::string(kScenario) + ".yaml"));
-  for (const auto& [from, to] : edits) {
-    const auto at = text.find(from);
-    if (at == std::string::npos) throw std::runtime_error("not in the scenario: " + from);
-    text.replace(at, from.size(), to);
-  }
-  const fs::path cfg = fs::temp_directory_path() / ("gyroless_" + tag + "_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(cfg) << text;
-  return cfg;
+  return sim_cli_test::edited_scenario(kScenario, tag, edits);
 }
 
 double quantile95(std::vector<double> v) {
