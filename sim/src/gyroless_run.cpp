@@ -7,6 +7,7 @@
 
 #include "hinf/models/star_tracker.hpp"
 #include "hinf/runtime/augmented_ekf.hpp"
+#include "hinf/sim/metrics.hpp"
 #include "hinf/sim/rng.hpp"
 
 namespace hinf::sim {
@@ -111,9 +112,7 @@ class WindowStatistics {
     out.attitude_rms_norm_deg = out.attitude_rms_deg.norm();
     out.torque_rms_norm = out.torque_rms.norm();
     out.attitude_max_deg = att_max_;
-    std::vector<double> sorted = tq_norm_;
-    std::sort(sorted.begin(), sorted.end());
-    out.torque_p95 = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(std::ceil(0.95 * n_)) - 1)];
+    out.torque_p95 = nearest_rank_quantile(tq_norm_, 0.95);
     for (int i = 0; i < 3; ++i) out.torque_rate_correlation(i) = correlation(tq_abs_[i], rate_abs_[i]);
     out.torque_rate_correlation_norm = correlation(tq_norm_, rate_norm_);
     out.nees_mean = nees_ / n_;

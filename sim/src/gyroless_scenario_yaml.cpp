@@ -148,9 +148,6 @@ GyrolessFilterSettings read_filter(const YamlMap& filters, const std::string& na
     if (f.has(k) && s.kind != GyrolessFilterKind::Aaekf) f.fail(k, "only with type: aaekf");
   if (f.has("Q") && s.kind == GyrolessFilterKind::Aaekf) f.fail("Q", "type: aaekf adapts Q; give Q_initial");
   s.Q = f.positive("Q", s.Q);
-  s.strong_tracking.weakening = 2;  // docs/experiments.md "Seed 002": the proto-tuned defaults
-  s.strong_tracking.alpha << 1, 1, 1, 1, 1, 1, 2, 2, 2;
-  s.adaptive.initial = 1e-14;
   if (s.kind == GyrolessFilterKind::Astekf) read_strong_tracking(f, s.strong_tracking);
   if (s.kind == GyrolessFilterKind::Aaekf) read_adaptive(f, s.adaptive);
   return s;

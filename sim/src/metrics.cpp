@@ -88,4 +88,10 @@ MetricStats compute_stats(const std::vector<std::optional<double>>& values) {
   return s;
 }
 
+double nearest_rank_quantile(std::vector<double> values, double q) {
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(q * static_cast<double>(values.size()));
+  return values[std::min(values.size() - 1, static_cast<std::size_t>(std::max(rank, 1.0)) - 1)];
+}
+
 }  // namespace hinf::sim

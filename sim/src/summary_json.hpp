@@ -62,13 +62,11 @@ inline Json stats_json(const std::vector<double>& all) {
   if (v.empty()) return nullptr;
   std::vector<std::optional<double>> o(v.begin(), v.end());
   Json j = json_stats(o);
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
   Json out = Json::object();
   for (const char* k : {"mean", "std", "min", "max"}) out[k] = j[k];
   out["median"] = json_num(finite_median(v));
-  out["p90"] = json_num(v[std::min(n - 1, static_cast<std::size_t>(std::ceil(0.9 * n)) - 1)]);
-  out["count"] = n;
+  out["p90"] = json_num(nearest_rank_quantile(v, 0.9));
+  out["count"] = v.size();
   return out;
 }
 

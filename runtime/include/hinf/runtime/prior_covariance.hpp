@@ -183,8 +183,8 @@ class StrongTracking {
   FilterStatus prior(const StateCov& PhiPPhiT, const StateCov& Q, const H& Hk, const Obs& gamma, const ObsCov& R,
                      StateCov& P_minus) {
     const FilterStatus s = fading_factors(PhiPPhiT, Q, Hk, gamma, R);
-    P_minus = PhiPPhiT;
     if (s_.form == FadingForm::Symmetric) {
+      P_minus = PhiPPhiT;
       for (int j = 0; j < NX; ++j)
         for (int i = 0; i < NX; ++i) P_minus(i, j) *= std::sqrt(lambda_(i) * lambda_(j));
     } else {

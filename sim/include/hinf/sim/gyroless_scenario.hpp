@@ -44,12 +44,27 @@ struct GyrolessScenario {
 
 enum class GyrolessFilterKind { Aekf, Astekf, Aaekf };
 
+// The ASTEKF's and the AAEKF's defaults: the tunings of an independent re-implementation
+// (docs/experiments.md "Seed 002"; the source gives none): K_b = 2, α = (1, …, 1, 2, 2, 2),
+// ρ = 0.95, λ_max = 1e3; Q_initial = 1e-14, s = 1, ε = 3, m = 30, law diag, no floor.
+inline runtime::StrongTrackingSettings<9> gyroless_strong_tracking_defaults() {
+  runtime::StrongTrackingSettings<9> s;
+  s.weakening = 2;
+  s.alpha << 1, 1, 1, 1, 1, 1, 2, 2, 2;
+  return s;
+}
+inline runtime::AdaptiveQSettings gyroless_adaptive_defaults() {
+  runtime::AdaptiveQSettings a;
+  a.initial = 1e-14;
+  return a;
+}
+
 struct GyrolessFilterSettings {
   std::string name = "aekf";
   GyrolessFilterKind kind = GyrolessFilterKind::Aekf;
   double Q = 1e-14;  // Q_T of the torque random walk, (N m)²/s (AEKF, ASTEKF)
-  runtime::StrongTrackingSettings<9> strong_tracking;  // ASTEKF
-  runtime::AdaptiveQSettings adaptive;                 // AAEKF (offsets and Δt set by the run)
+  runtime::StrongTrackingSettings<9> strong_tracking = gyroless_strong_tracking_defaults();  // ASTEKF
+  runtime::AdaptiveQSettings adaptive = gyroless_adaptive_defaults();  // AAEKF (offsets and Δt set by the run)
   std::string swept_from;  // the filter a sweep entry was made from (empty if none)
 };
 

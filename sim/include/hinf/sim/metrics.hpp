@@ -43,4 +43,7 @@ struct MetricStats {
 };
 MetricStats compute_stats(const std::vector<std::optional<double>>& values);
 
+// The nearest-rank q-quantile (0 < q ≤ 1) of a non-empty series: its ⌈q n⌉-th smallest value.
+double nearest_rank_quantile(std::vector<double> values, double q);
+
 }  // namespace hinf::sim
