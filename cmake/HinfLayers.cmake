@@ -32,7 +32,7 @@ set(HINF_EXTERNAL_hinf_sdp        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT)
 set(HINF_EXTERNAL_hinf_certify    Eigen3::Eigen yaml-cpp LAPACK)
 set(HINF_EXTERNAL_hinf_synth      Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK)
 set(HINF_EXTERNAL_hinf_sim        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
-                                  Threads::Threads nlohmann_json::nlohmann_json)
+                                  Threads::Threads nlohmann_json::nlohmann_json Boost::headers)
 
 # _hinf_closure(<target> <out-var>): the link closure of a target (target names only;
 # generator expressions such as $<LINK_ONLY:x> are unwrapped).

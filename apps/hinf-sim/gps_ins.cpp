@@ -32,21 +32,15 @@ GpsInsExperiment load_experiment(const Options& o, const std::string& text) {
 
 using Campaign = std::vector<std::vector<GpsInsFilterStatistics>>;  // [run][filter]
 
-// The Monte-Carlo runs of `scenario` (seeds run_seed(o.seed, i)); run 0's samples into
-// `samples` when given.
+// The Monte-Carlo runs of `scenario`; run 0's samples into `samples` when given.
 Campaign run_campaign(const Options& o, const GpsInsExperiment& e, const GpsInsScenario& scenario,
                       std::vector<std::vector<GpsInsSample>>* samples) {
-  Campaign stats(static_cast<std::size_t>(o.runs));
-  for_each_run(
-      o.runs, o.jobs,
-      [&](long i) {
+  return run_family_campaign<GpsInsFilterStatistics, GpsInsSample>(
+      o, samples, [&](std::uint64_t seed, const std::function<void(int, const GpsInsSample&)>& on) {
         GpsInsRunOptions options = e.options;
-        if (i == 0 && samples)
-          options.on_sample = [samples](int f, const GpsInsSample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
-        stats[static_cast<std::size_t>(i)] = run_gps_ins(scenario, e.filters, options, run_seed(o.seed, i));
-      },
-      progress_bar(!o.quiet && o.runs > 1));
-  return stats;
+        options.on_sample = on;
+        return run_gps_ins(scenario, e.filters, options, seed);
+      });
 }
 
 // One campaign per table-1 fraction; the scenario's own campaign where the fraction is its own.
@@ -66,20 +60,14 @@ std::vector<Campaign> run_table1_campaigns(const Options& o, const GpsInsExperim
 
 void write_outputs(const Options& o, const GpsInsExperiment& e, const std::vector<std::vector<GpsInsSample>>& samples,
                    const Campaign& stats, const std::vector<Campaign>& table1) {
-  namespace fs = std::filesystem;
-  create_output_directory(o.out_dir);
-  hinf::AtomicFileSet outputs;
-  outputs.protect(o.scenario_path);
-  const auto at = [&](const char* name) { return (fs::path(o.out_dir) / name).string(); };
-  outputs.add(at("trajectory.csv"), format_gps_ins_trajectory_csv(e, samples));
-  std::vector<std::uint64_t> seeds;
-  for (long i = 0; i < o.runs; ++i) seeds.push_back(run_seed(o.seed, i));
-  outputs.add(at("runs.csv"), format_gps_ins_runs_csv(e, stats, seeds));
-  outputs.add(at("summary.json"), format_gps_ins_summary_json(e, stats, o.scenario_path, o.seed));
-  if (!e.table1_fractions.empty()) outputs.add(at("table1.csv"), format_gps_ins_table1_csv(e, e.table1_fractions, table1));
-  if (!o.no_plots && e.plots)
-    write_gps_ins_plots(o.out_dir, e, samples, fs::path(o.scenario_path).stem().string(), outputs);
-  outputs.commit();
+  std::vector<std::pair<std::string, std::string>> files{
+      {"trajectory.csv", format_gps_ins_trajectory_csv(e, samples)},
+      {"runs.csv", format_gps_ins_runs_csv(e, stats, run_seeds(o))},
+      {"summary.json", format_gps_ins_summary_json(e, stats, o.scenario_path, o.seed)}};
+  if (!e.table1_fractions.empty()) files.emplace_back("table1.csv", format_gps_ins_table1_csv(e, e.table1_fractions, table1));
+  write_run_directory(o, files, e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+    write_gps_ins_plots(o.out_dir, e, samples, title, outputs);
+  });
 }
 
 }  // namespace

@@ -143,12 +143,13 @@ int run(int argc, char** argv) {
   }
 
   using namespace hinf::sim;
-  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, `gyroless_attitude`, or the Hill experiments
+  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, `gyroless_attitude`, `manoeuvring_target`, or the Hill experiments
     const std::string text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
     const std::string family = scenario_family(text, o.scenario_path);
     if (family == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
     if (family == "gps_ins_relative") return hinf::sim_cli::run_gps_ins(o, text);
     if (family == "gyroless_attitude") return hinf::sim_cli::run_gyroless_attitude(o, text);
+    if (family == "manoeuvring_target") return hinf::sim_cli::run_manoeuvring_target(o, text);
   } catch (const hinf::Error& e) {
     std::cerr << "hinf-sim: error: " << e.what() << "\n";
     return hinf::exit_code(e.code());
@@ -197,6 +198,24 @@ void create_output_directory(const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw hinf::Error(hinf::ErrorCode::InvalidInput, "cannot create the output directory '" + dir + "': " + ec.message());
+}
+
+std::vector<std::uint64_t> run_seeds(const Options& o) {
+  std::vector<std::uint64_t> seeds;
+  for (long i = 0; i < o.runs; ++i) seeds.push_back(hinf::sim::run_seed(o.seed, i));
+  return seeds;
+}
+
+void write_run_directory(const Options& o, const std::vector<std::pair<std::string, std::string>>& files,
+                         bool plots_enabled,
+                         const std::function<void(const std::string& title, hinf::AtomicFileSet& outputs)>& plots) {
+  namespace fs = std::filesystem;
+  create_output_directory(o.out_dir);
+  hinf::AtomicFileSet outputs;
+  outputs.protect(o.scenario_path);
+  for (const auto& [name, content] : files) outputs.add((fs::path(o.out_dir) / name).string(), content);
+  if (!o.no_plots && plots_enabled) plots(fs::path(o.scenario_path).stem().string(), outputs);
+  outputs.commit();
 }
 
 double checked_duration(double duration, double sample_time) {

@@ -1,9 +1,15 @@
-// hinf-sim's command line, shared by the scenario families (main.cpp, tumbling_hold.cpp).
+// hinf-sim's command line and what the scenario families share (main.cpp, tumbling_hold.cpp,
+// gps_ins.cpp, gyroless_attitude.cpp, manoeuvring_target.cpp).
 #pragma once
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "hinf/common/atomic_file.hpp"
+#include "hinf/sim/monte_carlo.hpp"
 
 namespace hinf::sim_cli {
 
@@ -33,6 +39,35 @@ int run_stages(const std::function<void()>& load, const std::function<void()>& s
 // Monte-Carlo progress on stderr (a bar), or nothing.
 std::function<void(long, long)> progress_bar(bool enabled);
 
+// The Monte-Carlo runs of a scenario family (`--runs`, `--jobs`, seeds run_seed(--seed, i)):
+// stats[i] = run_one(i, on_sample), where on_sample keeps filter f's samples of run 0 in
+// (*samples)[f] when `samples` is given (sized by the caller) and is empty otherwise.
+template <class Stats, class Sample, class RunOne>
+std::vector<std::vector<Stats>> run_family_campaign(const Options& o, std::vector<std::vector<Sample>>* samples,
+                                                    const RunOne& run_one) {
+  std::vector<std::vector<Stats>> stats(static_cast<std::size_t>(o.runs));
+  sim::for_each_run(
+      o.runs, o.jobs,
+      [&](long i) {
+        std::function<void(int, const Sample&)> on_sample;
+        if (i == 0 && samples)
+          on_sample = [samples](int f, const Sample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
+        stats[static_cast<std::size_t>(i)] = run_one(sim::run_seed(o.seed, i), on_sample);
+      },
+      progress_bar(!o.quiet && o.runs > 1));
+  return stats;
+}
+
+// The seeds of the runs, in order.
+std::vector<std::uint64_t> run_seeds(const Options& o);
+
+// A scenario family's run directory, all or nothing (the scenario file protected): each
+// (file name, content), then, unless --no-plots or `plots_enabled` is false, `plots(title,
+// outputs)` draws into temporaries of the same set (title: the scenario file's stem).
+void write_run_directory(const Options& o, const std::vector<std::pair<std::string, std::string>>& files,
+                         bool plots_enabled,
+                         const std::function<void(const std::string& title, hinf::AtomicFileSet& outputs)>& plots);
+
 // A `scenario: tumbling_hold` run (docs/experiments.md "Seed 004"): its exit code.
 int run_tumbling_hold(const Options& o, const std::string& scenario_text);
 
@@ -41,5 +76,8 @@ int run_gps_ins(const Options& o, const std::string& scenario_text);
 
 // A `scenario: gyroless_attitude` run (docs/experiments.md "Seed 002"): its exit code.
 int run_gyroless_attitude(const Options& o, const std::string& scenario_text);
+
+// A `scenario: manoeuvring_target` run (docs/experiments.md "Seed 001"): its exit code.
+int run_manoeuvring_target(const Options& o, const std::string& scenario_text);
 
 }  // namespace hinf::sim_cli

@@ -1,7 +1,9 @@
 // Cost of one step: LtiFilter (dynamic), FixedLtiFilter<6,3,6>, a plain C-style loop doing
 // the same arithmetic as docs/maths.md (5)-(6), and EKF / REKF predict+update on the Hill model with a
 // Cartesian (and range/azimuth/elevation) measurement. Inputs cycle through a
-// precomputed table so nothing is constant-folded.
+// precomputed table so nothing is constant-folded. Seed 001: the transient manoeuvre
+// estimator's step beside the EKF's on the same CW model, and the cost of the elliptic model's
+// sample (Kepler, Φ = exp(A Δt), Van Loan's Q_d) beside the closed-form CW transition.
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -10,8 +12,11 @@
 
 #include "hinf/runtime/augmented_ekf.hpp"
 #include "hinf/runtime/ekf.hpp"
+#include "hinf/runtime/manoeuvre_estimator.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/elliptic_relative.hpp"
+#include "hinf/models/two_body.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
 #include "hinf/models/rigid_body.hpp"
@@ -232,6 +237,66 @@ void BM_AugmentedEkfStep_AdaptiveQ(benchmark::State& st) {
 BENCHMARK(BM_AugmentedEkfStep_Plain);
 BENCHMARK(BM_AugmentedEkfStep_StrongTracking);
 BENCHMARK(BM_AugmentedEkfStep_AdaptiveQ);
+
+// Seed 001: the estimator's step (prediction, Joseph update, Û and both covariances, the NIS
+// window) with a fixed CW sample, the same work as BM_EkfStep_Hill_Cartesian plus Û.
+void BM_ManoeuvreEstimatorStep(benchmark::State& st) {
+  const Gains& G = gains();
+  namespace m = hinf::models;
+  const double n = 1.156874e-3;
+  const Mat6 Phi = m::clohessy_wiltshire_transition(n, 1.0);
+  Mat6 W = Mat6::Zero();
+  W.bottomRightCorner<3, 3>() = 0.25 * Eigen::Matrix3d::Identity();
+  const Mat6 Qd = m::sampled_white_noise_intensity<6>(m::clohessy_wiltshire_A(n), W, 1.0);
+  ManoeuvreEstimatorSettings s;
+  s.nis_window = 10;
+  s.nis_threshold = 59.7;
+  TransientManoeuvreEstimator f(s);
+  f.init(x0(), Mat6::Identity());
+  const Eigen::Matrix3d R = 4 * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d base(600, 550, 1040);
+  int k = 0;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(f.step(Phi, Qd, m::Matrix63::Zero(), base + G.ys[k++ & (kTable - 1)], R,
+                                    Eigen::Vector3d::Zero(), 1.0));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_ManoeuvreEstimatorStep);
+
+// One sample of the elliptic relative model (e = 0.1): the reference orbit by Kepler, A(t),
+// Φ, Q_d by Van Loan; `transition` frozen or exact (RK4, 10 steps).
+void elliptic_model_steps(benchmark::State& st, hinf::models::RelativeTransition transition) {
+  namespace m = hinf::models;
+  m::OrbitalElements el;
+  el.a = 7500e3;
+  el.e = 0.1;
+  m::EllipticRelativeModel::Options o;
+  o.transition = transition;
+  o.exact_substeps = 10;
+  const m::EllipticRelativeModel model(m::KeplerOrbit(m::state_from_elements(el, m::kEarthMu), m::kEarthMu), o);
+  double t = 0;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(model.step(t, 1.0, false));
+    t += 1;
+    benchmark::ClobberMemory();
+  }
+}
+void BM_EllipticModelSample_Frozen(benchmark::State& st) { elliptic_model_steps(st, hinf::models::RelativeTransition::Frozen); }
+void BM_EllipticModelSample_Exact10(benchmark::State& st) { elliptic_model_steps(st, hinf::models::RelativeTransition::Exact); }
+BENCHMARK(BM_EllipticModelSample_Frozen);
+BENCHMARK(BM_EllipticModelSample_Exact10);
+
+// The closed-form CW transition: what the frozen exponential replaces on a circular orbit.
+void BM_CwTransitionClosedForm(benchmark::State& st) {
+  double t = 1;
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(hinf::models::clohessy_wiltshire_transition(1.156874e-3, t));
+    t += 1e-6;
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_CwTransitionClosedForm);
 
 }  // namespace
 

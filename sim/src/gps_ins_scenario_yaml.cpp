@@ -153,9 +153,7 @@ void read_explicit_uncertainty(const YamlMap& f, int nz, GpsInsFilterSettings& s
 }
 
 GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name, int nz) {
-  for (char c : name)
-    if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
-      filters.fail(name, "a filter's name may hold only a-z, 0-9 and _ (it names columns and plots)");
+  require_column_name(filters, name, "a filter's name");
   const YamlMap f = filters.map(name, {"type", "jacobian", "propagation", "process_noise",
                                        "inertia_uncertainty_fraction", "gamma", "scale_factor", "kappa_A", "kappa_C",
                                        "A", "C", "L"},
@@ -188,17 +186,8 @@ void read_filters(const YamlMap& top, const GpsInsScenario& scenario, std::vecto
   const int nz = scenario.phase_mode == GpsInsScenario::PhaseMode::DoubleDifference
                      ? models::GpsInsDoubleDifferenceMeasurement::NZ
                      : models::GpsInsMeasurement::NZ;
-  top.required("filters", "a map of filter names to settings (ekf, rekf, …)");
-  const YAML::Node node = top.get("filters");
-  if (!node.IsMap() || node.size() == 0)
-    top.reader().fail(node, "filters: must be a non-empty map of filter names to settings");
-  if (node.size() > static_cast<std::size_t>(kMaxGpsInsFilters))
-    top.reader().fail(node, "filters: at most " + std::to_string(kMaxGpsInsFilters) + " filters");
-  const YamlMap filters(top.reader(), node, top.path_of("filters"));
-  for (const auto& kv : node) {
-    if (!kv.first.IsScalar()) top.reader().fail(kv.first, "filters: a filter's name must be a word");
-    out.push_back(read_filter(filters, kv.first.Scalar(), nz));
-  }
+  read_named_filters(top, static_cast<std::size_t>(kMaxGpsInsFilters), "ekf, rekf, …",
+                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_filter(filters, name, nz)); });
 }
 
 void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions& o,

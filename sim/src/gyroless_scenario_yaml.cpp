@@ -2,7 +2,6 @@
 // strict YAML reader.
 #include "hinf/sim/gyroless_scenario_yaml.hpp"
 
-#include <cctype>
 #include <cmath>
 
 #include "hinf/common/error.hpp"
@@ -128,9 +127,7 @@ void read_adaptive(const YamlMap& f, runtime::AdaptiveQSettings& a) {
 }
 
 GyrolessFilterSettings read_filter(const YamlMap& filters, const std::string& name) {
-  for (char c : name)
-    if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
-      filters.fail(name, "a filter's name may hold only a-z, 0-9 and _ (it names columns and plots)");
+  require_column_name(filters, name, "a filter's name");
   const YamlMap f = filters.map(name, {"type", "Q", "forgetting", "weakening", "alpha", "fading_form", "lambda_max",
                                        "Q_initial", "scale", "epsilon", "window", "law", "floor"},
                                 EmptyMap::Allowed);
@@ -154,17 +151,8 @@ GyrolessFilterSettings read_filter(const YamlMap& filters, const std::string& na
 }
 
 void read_filters(const YamlMap& top, std::vector<GyrolessFilterSettings>& out) {
-  top.required("filters", "a map of filter names to settings (aekf, astekf, aaekf, …)");
-  const YAML::Node node = top.get("filters");
-  if (!node.IsMap() || node.size() == 0)
-    top.reader().fail(node, "filters: must be a non-empty map of filter names to settings");
-  if (node.size() > static_cast<std::size_t>(kMaxGyrolessFilters))
-    top.reader().fail(node, "filters: at most " + std::to_string(kMaxGyrolessFilters) + " filters");
-  const YamlMap filters(top.reader(), node, top.path_of("filters"));
-  for (const auto& kv : node) {
-    if (!kv.first.IsScalar()) top.reader().fail(kv.first, "filters: a filter's name must be a word");
-    out.push_back(read_filter(filters, kv.first.Scalar()));
-  }
+  read_named_filters(top, static_cast<std::size_t>(kMaxGyrolessFilters), "aekf, astekf, aaekf, …",
+                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_filter(filters, name)); });
 }
 
 // sweep: {<filter>: [Q, …]}: a copy of the (aekf or astekf) filter per Q.

@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,32 @@ inline Eigen::Vector3d scenario_vector3(const YamlMap& m, const char* key, const
   const Eigen::VectorXd v = m.vector(key, 3);
   if (!v.allFinite()) m.fail(key, "every entry must be finite");
   return v * scale;
+}
+
+// A name that labels columns and plots: a-z, 0-9 and _ only, not empty; `what` says what it
+// names ("a filter's name").
+inline void require_column_name(const YamlMap& m, const std::string& name, const char* what) {
+  bool ok = !name.empty();
+  for (char c : name)
+    ok = ok && (std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_');
+  if (!ok) m.fail(name, std::string(what) + " may hold only a-z, 0-9 and _ (it names columns and plots)");
+}
+
+// The required map `filters` of filter names to settings, 1…max_filters entries; read(filters,
+// name) for each, in the file's order. `examples` names a few types for the message.
+template <class Read>
+void read_named_filters(const YamlMap& top, std::size_t max_filters, const std::string& examples, const Read& read) {
+  top.required("filters", "a map of filter names to settings (" + examples + ")");
+  const YAML::Node node = top.get("filters");
+  if (!node.IsMap() || node.size() == 0)
+    top.reader().fail(node, "filters: must be a non-empty map of filter names to settings");
+  if (node.size() > max_filters)
+    top.reader().fail(node, "filters: at most " + std::to_string(max_filters) + " filters");
+  const YamlMap filters(top.reader(), node, top.path_of("filters"));
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) top.reader().fail(kv.first, "filters: a filter's name must be a word");
+    read(filters, kv.first.Scalar());
+  }
 }
 
 // The most samples a run may take (1e7: 116 days at 1 s).

@@ -2,6 +2,7 @@
 // running hinf-sim on configs/scenarios/NAME.yaml, reading its CSV files, and the metrics of
 // summary.json (a number for one run, {mean, max, …} for several).
 #pragma once
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -95,6 +97,24 @@ inline fs::path edited_scenario(const std::string& name, const std::string& tag,
   const fs::path cfg = fs::temp_directory_path() / (name + "_" + tag + "_" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(cfg) << text;
   return cfg;
+}
+
+// Each (from, to, key): configs/scenarios/NAME.yaml with `from` replaced by `to` exits 2, its
+// message names `key`, and no summary.json is written.
+using InvalidCase = std::tuple<std::string, std::string, std::string>;
+inline void expect_invalid_values_exit_two(const std::string& family, const std::string& name,
+                                           const std::vector<InvalidCase>& cases) {
+  for (const auto& [from, to, key] : cases) {
+    const fs::path cfg = edited_scenario(name, "bad", {{from, to}});
+    const fs::path out = fresh_dir(family, "bad");
+    const fs::path log = out.string() + ".log";
+    EXPECT_EQ(run_scenario_file(cfg, "--quiet", out, log), 2) << to;
+    const std::string message = slurp(log);
+    EXPECT_NE(message.find(key), std::string::npos) << to << "\n" << message;
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << to;
+    fs::remove(log);
+    fs::remove(cfg);
+  }
 }
 
 inline double metric_max(const YAML::Node& m) { return m.IsMap() ? m["max"].as<double>() : m.as<double>(); }

@@ -129,7 +129,7 @@ TEST(GyrolessScenario, StrongTrackingAtItsCapFinishesAndCountsTheHits) {
 }
 
 TEST(GyrolessScenario, InvalidValuesExitTwoNamingTheKey) {
-  const std::vector<std::tuple<std::string, std::string, std::string>> cases{
+  const std::vector<InvalidCase> cases{
       {"forgetting: 0.95", "forgetting: 1.5", "forgetting"},
       {"weakening: 2.0", "weakening: 0.5", "weakening"},
       {"alpha: [1, 1, 1, 1, 1, 1, 2, 2, 2]", "alpha: [1, 1, 1, 1, 1, 1, 2, 2, 0.5]", "alpha"},
@@ -174,17 +174,7 @@ TEST(GyrolessScenario, InvalidValuesExitTwoNamingTheKey) {
       {"sample_time: 1.0 ", "sample_time: 0 ", "sample_time"},
       {"steady_state_start: 600}", "steady_state_start: 600, window: 3}", "window"},
   };
-  for (const auto& [from, to, key] : cases) {
-    const fs::path cfg = edited_scenario("bad", {{from, to}});
-    const fs::path out = fresh_dir("bad");
-    const fs::path log = out.string() + ".log";
-    EXPECT_EQ(run_scenario_file(cfg, "--quiet", out, log), 2) << to;
-    const std::string message = slurp(log);
-    EXPECT_NE(message.find(key), std::string::npos) << to << "\n" << message;
-    EXPECT_FALSE(fs::exists(out / "summary.json")) << to;
-    fs::remove(log);
-    fs::remove(cfg);
-  }
+  expect_invalid_values_exit_two("gyroless", kScenario, cases);
 }
 
 // The acceptance (002-E1, E3, E4, E5, E6) over 20 runs of the shipped scenario, one

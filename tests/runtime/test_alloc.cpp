@@ -12,8 +12,11 @@
 
 #include "hinf/runtime/augmented_ekf.hpp"
 #include "hinf/runtime/ekf.hpp"
+#include "hinf/runtime/manoeuvre_estimator.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/models/cartesian_position.hpp"
+#include "hinf/models/elliptic_relative.hpp"
+#include "hinf/models/two_body.hpp"
 #include "hinf/models/gps_ins.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
@@ -288,4 +291,33 @@ TEST(Allocations, AugmentedEkfStepsDoNotAllocate) {
   a.window = 5;
   a.initial = 1e-14;
   EXPECT_EQ(augmented_ekf_step_allocations(hinf::runtime::AdaptiveQ<9, 6, 3>(a)), 0);
+}
+
+// Seed 001's estimator with its model: the reference orbit (Kepler), A(t), Φ = exp(A Δt) (frozen
+// and exact), Van Loan's Q_d, Γ, and the estimator's step with the NIS window (allocated by
+// the constructor) do not allocate.
+TEST(Allocations, ManoeuvreEstimatorAndEllipticModelStepsDoNotAllocate) {
+  namespace m = hinf::models;
+  m::OrbitalElements el;
+  el.a = 7000e3;
+  el.e = 0.1;
+  const m::KeplerOrbit ref(m::state_from_elements(el, m::kEarthMu), m::kEarthMu);
+  m::EllipticRelativeModel::Options frozen, exact;
+  exact.transition = m::RelativeTransition::Exact;
+  exact.exact_substeps = 10;
+  const m::EllipticRelativeModel models[2] = {m::EllipticRelativeModel(ref, frozen), m::EllipticRelativeModel(ref, exact)};
+  hinf::runtime::ManoeuvreEstimatorSettings s;
+  s.nis_window = 10;
+  s.nis_threshold = 59.7;
+  hinf::runtime::TransientManoeuvreEstimator f(s);
+  Eigen::Matrix<double, 6, 1> x0;
+  x0 << 1000, 50000, 0, 0, -10, 0;
+  f.init(x0, Eigen::Matrix<double, 6, 6>::Identity());
+  const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() * 4;
+  CountScope c;
+  for (int k = 0; k < 50; ++k) {
+    const m::SampledRelativeStep st = models[k % 2].step(k, 1.0, true);
+    f.step(st.Phi, st.Qd, st.Gamma, x0.head<3>(), R, Eigen::Vector3d(0.1, 0, 0), 1.0);
+  }
+  EXPECT_EQ(c.count(), 0);
 }

@@ -23,6 +23,26 @@ inline const char* to_string(Discretisation d) {
   return d == Discretisation::Euler ? "euler" : d == Discretisation::Tustin ? "tustin" : "zoh";
 }
 
+// The sizes of the block matrices below: 2N, or dynamic.
+template <int N>
+constexpr int kDoubled = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N;
+
+// exp(T [A_c, I; 0, 0]) = [A, Γ; 0, I]: the zero-order-hold A and Γ = ∫₀ᵀ e^{A_c s} ds. Fixed
+// sizes stay fixed (no heap allocation); MatrixXd works too.
+template <int N>
+void held_input_transition(const Eigen::Matrix<double, N, N>& A_c, double T, Eigen::Matrix<double, N, N>& A,
+                           Eigen::Matrix<double, N, N>& Gamma) {
+  const Eigen::Index n = A_c.rows();
+  Eigen::Matrix<double, kDoubled<N>, kDoubled<N>> M =
+      Eigen::Matrix<double, kDoubled<N>, kDoubled<N>>::Zero(2 * n, 2 * n);
+  M.topLeftCorner(n, n) = T * A_c;
+  M.topRightCorner(n, n).setIdentity();
+  M.topRightCorner(n, n) *= T;
+  const Eigen::Matrix<double, kDoubled<N>, kDoubled<N>> expM = M.exp();
+  A = expM.topLeftCorner(n, n);
+  Gamma = expM.topRightCorner(n, n);
+}
+
 struct SampledMatrices {
   Eigen::MatrixXd A;      // discrete state matrix
   Eigen::MatrixXd Gamma;  // held input → state
@@ -41,12 +61,7 @@ inline SampledMatrices discretise(const Eigen::MatrixXd& A_c, double T, Discreti
     out.A = lu.solve(I + (T / 2) * A_c);
     out.Gamma = lu.solve(T * I);
   } else {
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    M.topLeftCorner(n, n) = A_c;
-    M.topRightCorner(n, n) = I;
-    const Eigen::MatrixXd expM = (T * M).exp();
-    out.A = expM.topLeftCorner(n, n);
-    out.Gamma = expM.topRightCorner(n, n);
+    held_input_transition(A_c, T, out.A, out.Gamma);
   }
   return out;
 }
@@ -67,16 +82,25 @@ inline Eigen::MatrixXd covariance_factor(const Eigen::MatrixXd& Q) {
   return B;
 }
 
-// ∫₀ᵀ e^{A_c s} B_c B_cᵀ e^{A_cᵀ s} ds by Van Loan's block exponential, symmetrised.
-inline Eigen::MatrixXd sampled_white_noise_covariance(const Eigen::MatrixXd& A_c, const Eigen::MatrixXd& B_c, double T) {
+// ∫₀ᵀ e^{A_c s} W e^{A_cᵀ s} ds for a white-noise intensity W (symmetric PSD) by Van Loan's
+// block exponential, symmetrised. Fixed sizes stay fixed; MatrixXd works too.
+template <int N>
+Eigen::Matrix<double, N, N> sampled_white_noise_intensity(const Eigen::Matrix<double, N, N>& A_c,
+                                                          const Eigen::Matrix<double, N, N>& W, double T) {
   const Eigen::Index n = A_c.rows();
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  M.topLeftCorner(n, n) = -A_c;
-  M.topRightCorner(n, n) = B_c * B_c.transpose();
-  M.bottomRightCorner(n, n) = A_c.transpose();
-  const Eigen::MatrixXd expM = (T * M).exp();
-  const Eigen::MatrixXd Q = expM.bottomRightCorner(n, n).transpose() * expM.topRightCorner(n, n);
+  Eigen::Matrix<double, kDoubled<N>, kDoubled<N>> M =
+      Eigen::Matrix<double, kDoubled<N>, kDoubled<N>>::Zero(2 * n, 2 * n);
+  M.topLeftCorner(n, n) = -T * A_c;
+  M.topRightCorner(n, n) = T * W;
+  M.bottomRightCorner(n, n) = T * A_c.transpose();
+  const Eigen::Matrix<double, kDoubled<N>, kDoubled<N>> expM = M.exp();
+  const Eigen::Matrix<double, N, N> Q = expM.bottomRightCorner(n, n).transpose() * expM.topRightCorner(n, n);
   return 0.5 * (Q + Q.transpose());
+}
+
+// The same for the intensity B_c B_cᵀ.
+inline Eigen::MatrixXd sampled_white_noise_covariance(const Eigen::MatrixXd& A_c, const Eigen::MatrixXd& B_c, double T) {
+  return sampled_white_noise_intensity<Eigen::Dynamic>(A_c, B_c * B_c.transpose(), T);
 }
 
 }  // namespace hinf::models

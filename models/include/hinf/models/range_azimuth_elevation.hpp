@@ -1,4 +1,6 @@
-// Range, azimuth, elevation of the target (docs/maths.md §10; the paper's eq. 7).
+// Range, azimuth, elevation of the target (docs/maths.md §10; the paper's eq. 7), and the
+// z-up convention of docs/maths.md (222) (ElevationConvention::ZUp: elevation positive towards
+// +z, p_z = +rho sin(beta); every sign of beta below flips).
 //
 // State x = [r; v], r the relative position in the reference (Hill) frame. With C_bl the
 // frame-to-body rotation (default identity), the body-frame position is p = C_bl r and
@@ -29,6 +31,9 @@
 
 namespace hinf::models {
 
+// Which way elevation is positive: towards −z (§10, the default) or towards +z ((222)).
+enum class ElevationConvention { ZDown, ZUp };
+
 class RangeAzimuthElevation {
  public:
   static constexpr int NX = 6;
@@ -38,7 +43,9 @@ class RangeAzimuthElevation {
   using Jacobian = Eigen::Matrix<double, 3, 6>;
 
   // C_bl must be a rotation (orthonormal, det +1, to 1e-9); throws std::invalid_argument.
-  explicit RangeAzimuthElevation(const Eigen::Matrix3d& C_bl = Eigen::Matrix3d::Identity()) : C_bl_(C_bl) {
+  explicit RangeAzimuthElevation(const Eigen::Matrix3d& C_bl = Eigen::Matrix3d::Identity(),
+                                 ElevationConvention convention = ElevationConvention::ZDown)
+      : C_bl_(C_bl), up_(convention == ElevationConvention::ZUp ? 1.0 : -1.0) {
     if (!C_bl.allFinite()) throw std::invalid_argument("RangeAzimuthElevation: C_bl (3x3) has a non-finite entry");
     const double orth = (C_bl * C_bl.transpose() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
     if (orth > 1e-9 || C_bl.determinant() < 0.0)
@@ -47,9 +54,9 @@ class RangeAzimuthElevation {
   }
 
   // (rho, alpha, beta) of a body-frame position.
-  static Vector rae_from_body(const Eigen::Vector3d& p) {
+  Vector rae_from_body(const Eigen::Vector3d& p) const {
     const double q = std::hypot(p.x(), p.y());
-    return Vector(p.norm(), std::atan2(p.y(), p.x()), std::atan2(-p.z(), q));
+    return Vector(p.norm(), std::atan2(p.y(), p.x()), std::atan2(up_ * p.z(), q));
   }
 
   Vector h(const State& x) const { return rae_from_body(C_bl_ * x.head<3>()); }
@@ -63,7 +70,7 @@ class RangeAzimuthElevation {
     Eigen::Matrix3d J;
     J.row(0) = p.transpose() / rho;
     J.row(1) << -p.y() / s, p.x() / s, 0.0;
-    J.row(2) << p.z() * p.x() / (q * rho2), p.z() * p.y() / (q * rho2), -q / rho2;
+    J.row(2) << -up_ * p.z() * p.x() / (q * rho2), -up_ * p.z() * p.y() / (q * rho2), up_ * q / rho2;
     Jacobian Hk;
     Hk << J * C_bl_, Eigen::Matrix3d::Zero();
     return Hk;
@@ -79,16 +86,16 @@ class RangeAzimuthElevation {
   // Inverse of h: reference-frame position from (rho, alpha, beta).
   Eigen::Vector3d position_from_measurement(const Vector& y) const {
     const double rho = y(0), ca = std::cos(y(1)), sa = std::sin(y(1)), cb = std::cos(y(2)), sb = std::sin(y(2));
-    return C_bl_.transpose() * Eigen::Vector3d(rho * cb * ca, rho * cb * sa, -rho * sb);
+    return C_bl_.transpose() * Eigen::Vector3d(rho * cb * ca, rho * cb * sa, up_ * rho * sb);
   }
 
   // d position / d(rho, alpha, beta) at y.
   Eigen::Matrix3d conversion_jacobian(const Vector& y) const {
     const double rho = y(0), ca = std::cos(y(1)), sa = std::sin(y(1)), cb = std::cos(y(2)), sb = std::sin(y(2));
     Eigen::Matrix3d Jg;
-    Jg.col(0) << cb * ca, cb * sa, -sb;
+    Jg.col(0) << cb * ca, cb * sa, up_ * sb;
     Jg.col(1) << -rho * cb * sa, rho * cb * ca, 0.0;
-    Jg.col(2) << -rho * sb * ca, -rho * sb * sa, -rho * cb;
+    Jg.col(2) << -rho * sb * ca, -rho * sb * sa, up_ * rho * cb;
     return C_bl_.transpose() * Jg;
   }
 
@@ -112,6 +119,7 @@ class RangeAzimuthElevation {
 
  private:
   Eigen::Matrix3d C_bl_;
+  double up_;  // +1 for ZUp, −1 for ZDown
 };
 
 }  // namespace hinf::models

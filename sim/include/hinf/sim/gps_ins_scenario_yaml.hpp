@@ -1,5 +1,5 @@
-// Reading a `scenario: gps_ins_relative` file (docs/experiments.md "Seed 003", keys in
-// docs/file-formats.md) with the project's strict YAML reader: unknown keys, bad values and
+// Reading a `scenario: gps_ins_relative` file (docs/experiments.md "Seed 003", which lists
+// the keys) with the project's strict YAML reader: unknown keys, bad values and
 // an inconsistent setup are hinf::Error(InvalidInput) naming file:line:col and the key path.
 // Angles are in degrees in the file (keys *_deg, *_deg_s, *_deg_h), SI inside.
 #pragma once

@@ -1,5 +1,5 @@
-// Reading a `scenario: gyroless_attitude` file (docs/experiments.md "Seed 002", keys in
-// docs/file-formats.md) with the project's strict YAML reader: unknown keys, bad values and
+// Reading a `scenario: gyroless_attitude` file (docs/experiments.md "Seed 002", which lists
+// the keys) with the project's strict YAML reader: unknown keys, bad values and
 // an inconsistent setup are hinf::Error(InvalidInput) naming file:line:col and the key path.
 #pragma once
 #include <string>
