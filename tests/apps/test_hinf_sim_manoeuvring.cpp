@@ -6,6 +6,7 @@
 //    {mean, std, min, max, count} with per-axis arrays;
 //  - 001-E1, E2, E5: the noise-free mean response of cases 6.1 and 6.2;
 //  - the eccentric variant: freezing costs little, ignoring the eccentricity (CW) much more;
+//  - a chaser with its own manoeuvre: the prediction with its command removes the lag;
 //  - invalid input: exit 2 naming the key, nothing written;
 //  - (heavy) 001-E3, E4, E6: 100-run Monte Carlo of both cases and of the detector.
 #include <gtest/gtest.h>
@@ -196,6 +197,25 @@ TEST(ManoeuvringScenario, EccentricOrbitFreezingCostsLittleAndCwMuch) {
   const YAML::Node f = YAML::LoadFile((out / "summary.json").string())["filters"];
   EXPECT_GE(f["cw"]["windows"]["post"]["position_rms_m"][1].as<double>(),
             5 * f["frozen"]["windows"]["post"]["position_rms_m"][1].as<double>());
+}
+
+// The chaser flying its own manoeuvre (noise off): the source's unforced prediction lags while
+// the chaser thrusts; carrying its known command in the prediction removes the lag.
+TEST(ManoeuvringScenario, PredictionWithTheChaserCommandRemovesTheLag) {
+  const fs::path cfg = edited_scenario("manoeuvring-target-chaser-differs", "noiseless", {{"noise: true ", "noise: false"}});
+  const fs::path out = fresh_dir("differs");
+  ASSERT_EQ(run_file(cfg, "--no-plots", out), 0);
+  fs::remove(cfg);
+  const YAML::Node f = YAML::LoadFile((out / "summary.json").string())["filters"];
+  const auto metric = [&](const char* filter, const char* window, const char* name) {
+    return f[filter]["windows"][window][name][0].as<double>();
+  };
+  // before the target's onset only the chaser thrusts (from 200 s): all lag, no Û error
+  EXPECT_LE(metric("with_control", "pre", "position_rms_m"), 0.1 * metric("transient", "pre", "position_rms_m"));
+  EXPECT_GE(metric("transient", "pre", "position_rms_m"), 5.0);
+  EXPECT_LE(metric("with_control", "manoeuvre", "maneuver_error_rms_mps2"),
+            0.5 * metric("transient", "manoeuvre", "maneuver_error_rms_mps2"));
+  EXPECT_LE(metric("with_control", "manoeuvre", "position_rms_m"), 0.6 * metric("transient", "manoeuvre", "position_rms_m"));
 }
 
 TEST(ManoeuvringScenario, InvalidValuesExitTwoNamingTheKey) {

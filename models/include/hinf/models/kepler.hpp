@@ -47,15 +47,14 @@ double increasing_root(const G& g, const DG& dg, double lo, double hi, double x0
   double x = x0;
   for (int i = 0; i < kKeplerMaxIterations; ++i) {
     const double gx = g(x);
+    if (gx == 0) return x;
     if (gx < 0)
       lo = x;
     else
       hi = x;
-    double next = x - gx / dg(x);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const double step = next - x;
-    x = next;
-    if (std::abs(step) < kKeplerTolerance * std::max(1.0, std::abs(x))) break;
+    const double newton = x - gx / dg(x);
+    if (std::abs(newton - x) < kKeplerTolerance * std::max(1.0, std::abs(x))) return newton;
+    x = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
   }
   return x;
 }
