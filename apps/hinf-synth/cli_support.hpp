@@ -14,6 +14,8 @@
 
 namespace hinf::cli {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 // The positional pair CONFIG GAINS of the subcommands that read a config and a gains file.
 struct ConfigGainsArgs {
   std::string config;

@@ -20,7 +20,6 @@ using Json = nlohmann::ordered_json;  // keys in the order written
 Json json_num(double v) { return std::isfinite(v) ? Json(std::strtod(num(v).c_str(), nullptr)) : Json(nullptr); }
 
 // θ rad/sample at sample time T is θ/(2πT) Hz.
-constexpr double kPi = 3.14159265358979323846;
 double peak_hz(const synth::FilterAnalysis& a, double T) { return a.hinf_norm_peak_frequency / (2 * kPi * T); }
 
 // One line of JSON: the gains path and the analysis (keys in this order).

@@ -12,7 +12,6 @@
 namespace hinf::cli {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
   std::ostringstream os;
@@ -26,7 +25,7 @@ std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
 // The Kalman filter set beside the given one: the predictor, or x̂(k|k) beside a filtered estimate.
 const char* kalman_name(bool filtered) { return filtered ? "Kalman filter x_hat(k|k)" : "Kalman predictor"; }
 
-std::string plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz,
+std::string sigma_plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz,
                         bool filtered) {
   std::ostringstream gp;
   const std::string x = hz ? "2" : "1";
@@ -75,7 +74,7 @@ void add_compare(CLI::App& app, Action& action) {
       if (!plot->empty())
         write_png_by_gnuplot(
             *plot, data,
-            [&](const std::string& d, const std::string& png) { return plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
+            [&](const std::string& d, const std::string& png) { return sigma_plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
             },
             {args->config, args->gains});
       return 0;

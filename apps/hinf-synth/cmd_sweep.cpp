@@ -76,7 +76,7 @@ Json point_json(const synth::SweepPoint& p) {
 
 // γ against the parameter (log scale), the points that were not certified marked on the axis.
 // `floor` is where the uncertified points are drawn (the smallest certified γ, or 1).
-std::string plot_script(const std::string& name, const std::string& data, const std::string& png, double floor) {
+std::string sweep_plot_script(const std::string& name, const std::string& data, const std::string& png, double floor) {
   const std::string y = num(floor);
   std::ostringstream gp;
   gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
@@ -135,7 +135,7 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
   if (!a.plot.empty())
     write_png_by_gnuplot(
         a.plot, csv,
-        [&](const std::string& data, const std::string& png) { return plot_script(name, data, png, plot_floor(points)); },
+        [&](const std::string& data, const std::string& png) { return sweep_plot_script(name, data, png, plot_floor(points)); },
         {a.config});
   return 0;
 }

@@ -6,6 +6,8 @@
 
 namespace hinf::certify::detail {
 
+inline constexpr double kPi = 3.14159265358979323846;  // θ = π is the Nyquist frequency
+
 class FrequencyResponse {
  public:
   FrequencyResponse(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,

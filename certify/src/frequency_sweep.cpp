@@ -7,18 +7,17 @@
 
 namespace hinf::certify {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // The grid's lowest frequency, as a fraction of π (Nyquist).
 constexpr double kLowestFraction = 1e-4;
 }  // namespace
 
 std::vector<double> frequency_grid(int points, const std::vector<double>& extra) {
   std::vector<double> theta;
-  const double lo = std::log(kLowestFraction * kPi), hi = std::log(kPi);
+  const double lo = std::log(kLowestFraction * detail::kPi), hi = std::log(detail::kPi);
   for (int i = 0; i < points; ++i) theta.push_back(std::exp(lo + (hi - lo) * i / (points - 1)));
-  theta.back() = kPi;  // exactly Nyquist
+  theta.back() = detail::kPi;  // exactly Nyquist
   for (double t : extra)
-    if (t >= 0 && t <= kPi) theta.push_back(t);
+    if (t >= 0 && t <= detail::kPi) theta.push_back(t);
   std::sort(theta.begin(), theta.end());
   theta.erase(std::unique(theta.begin(), theta.end()), theta.end());
   return theta;

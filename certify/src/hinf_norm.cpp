@@ -45,7 +45,6 @@
 namespace hinf::certify {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Accept a pencil eigenvalue as "on the unit circle" if | |z| − 1 | ≤ this.
 constexpr double kUnitCircleTolerance = 1e-5;
 constexpr int kMaxIterations = 60;
@@ -162,7 +161,7 @@ class PeakSearch {
 // the pole with the largest ratio |Im|/|Re|; evaluating all of them is cheap), then a local
 // search between the neighbours of the best of these. False if G ≡ 0 (and σ_max(D) = 0).
 bool initial_lower_bound(PeakSearch& search, const Eigen::VectorXcd& poles, Eigen::Index n, double sigma_D) {
-  std::vector<double> initial{0.0, kPi};
+  std::vector<double> initial{0.0, detail::kPi};
   for (Eigen::Index i = 0; i < poles.size(); ++i) initial.push_back(std::abs(std::arg(poles(i))));
   std::sort(initial.begin(), initial.end());
   initial.erase(std::unique(initial.begin(), initial.end()), initial.end());
@@ -171,13 +170,13 @@ bool initial_lower_bound(PeakSearch& search, const Eigen::VectorXcd& poles, Eige
     // A rational matrix of McMillan degree ≤ n that vanishes at n + 1 distinct points
     // of the unit circle vanishes identically (each entry's numerator has degree ≤ n).
     for (Eigen::Index i = 0; i <= n && search.attained() == 0.0; ++i)
-      search.evaluate(kPi * (static_cast<double>(i) + 0.5) / static_cast<double>(n + 1));
+      search.evaluate(detail::kPi * (static_cast<double>(i) + 0.5) / static_cast<double>(n + 1));
     if (search.attained() == 0.0 && sigma_D == 0.0) return false;
   }
   if (search.attained() > 0.0) {
     const auto it = std::lower_bound(initial.begin(), initial.end(), search.peak());
     const double left = it == initial.begin() ? 0.0 : *(it - 1);
-    const double right = (it == initial.end() || it + 1 == initial.end()) ? kPi : *(it + 1);
+    const double right = (it == initial.end() || it + 1 == initial.end()) ? detail::kPi : *(it + 1);
     search.refine(left, right);
   }
   return true;
@@ -195,7 +194,7 @@ std::vector<TestPoint> test_points(const std::vector<double>& thetas) {
   if (thetas.empty()) return points;
   points.push_back({0.5 * thetas.front(), 0.0, thetas.front()});
   for (std::size_t i = 0; i < thetas.size(); ++i) {
-    const double next = i + 1 < thetas.size() ? thetas[i + 1] : kPi;
+    const double next = i + 1 < thetas.size() ? thetas[i + 1] : detail::kPi;
     points.push_back({thetas[i], i > 0 ? thetas[i - 1] : 0.0, next});
     points.push_back({0.5 * (thetas[i] + next), thetas[i], next});
   }

@@ -17,7 +17,7 @@ namespace {
 constexpr double kNormTolerance = 1e-10;
 // Golden-section search over log λ: bracket half-width and steps (0.618^70 · 2·35 ≈ 2e-13).
 constexpr double kLogLambdaHalfWidth = 35.0;
-constexpr int kGoldenSteps = 70;
+constexpr int kScalingGoldenSteps = 70;
 // Multiplier search by slopes: stop when the bracket in log λ is this narrow, or when
 // the minimum of log‖G_λ‖∞ is known to kLogNormGap (the norms' own accuracy); at most
 // kSlopeSearchMaxNorms norms before the golden-section fallback.
@@ -188,7 +188,7 @@ void ScaledBoundedReal::golden_section_search(double gamma, double d0, Best& bes
     return f;
   };
   detail::golden_section_minimise(norm_at, d0 - kLogLambdaHalfWidth, d0 + kLogLambdaHalfWidth,
-                                  kGoldenSteps, [&best](double, double) { return best.done(); });
+                                  kScalingGoldenSteps, [&best](double, double) { return best.done(); });
 }
 
 void ScaledBoundedReal::search_common_multiplier(double gamma, double d0, Best& best) {

@@ -14,7 +14,7 @@ namespace hinf::certify {
 namespace {
 
 // Accuracy of each norm (its lower value σ_max(peak) is what is reported).
-constexpr double kNormTolerance = 1e-8;
+constexpr double kWorstCaseNormTolerance = 1e-8;
 // Local search: trials from the worst sample, a perturbation of relative size `step` (first
 // kInitialStep), halved after kMissesPerHalving trials without gain, at most kTrials.
 constexpr double kInitialStep = 0.5;
@@ -26,7 +26,7 @@ double gain_at(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& 
   const StateSpace es = error_system(plant, filter, F);
   if (!(spectral_radius(es.A) < 1)) return INFINITY;
   ++evaluations;
-  return discrete_hinf_norm(es, kNormTolerance).lower_bound;
+  return discrete_hinf_norm(es, kWorstCaseNormTolerance).lower_bound;
 }
 
 }  // namespace

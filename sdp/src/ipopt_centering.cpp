@@ -24,7 +24,7 @@ using Ipopt::Number;
 // Bounds beyond Ipopt's nlp_lower/upper_bound_inf (±1e19): the variables are free.
 constexpr Number kFreeBound = 1e20;
 // λ² counts as progress when it falls below this fraction of the best so far.
-constexpr double kProgressFactor = 0.5;
+constexpr double kCentringProgressFactor = 0.5;
 // The exact-Newton bound λ₊ ≤ (λ/(1 − λ))² is tested on full steps taken from
 // λ² < kQuadraticRegionLambda2 (λ < 1/2), and broken when λ₊² exceeds it this many times.
 constexpr double kQuadraticRegionLambda2 = 0.25;
@@ -154,7 +154,7 @@ class CenteringTnlp : public Ipopt::TNLP {
         smallest_lambda2_ = l2;
         smallest_z_ = last_grad_z_;
       }
-      if (l2 < kProgressFactor * best_lambda2_) {
+      if (l2 < kCentringProgressFactor * best_lambda2_) {
         best_lambda2_ = l2;
         best_iter_ = iter;
       } else if (iter - best_iter_ >= opt_.stall_iterations && smallest_lambda2_ <= opt_.lambda2_accept) {

@@ -12,9 +12,9 @@ namespace hinf::synth {
 namespace {
 
 // A golden controller within this relative γ still counts as optimal (as for filters).
-constexpr double kEquallyOptimalTolerance = 1e-6;
+constexpr double kControllerEquallyOptimalTolerance = 1e-6;
 // Relative accuracy of the controllers' H∞ norms.
-constexpr double kNormTolerance = 1e-9;
+constexpr double kGoldenNormTolerance = 1e-9;
 
 void require_fits(const hinf::GeneralisedPlant& P, const hinf::Controller& K) {
   const Eigen::Index nk = K.A_K.rows();
@@ -36,7 +36,7 @@ bool stable(const hinf::Controller& K, bool discrete) {
 }
 
 double hinf_norm(const hinf::StateSpace& s, bool discrete) {
-  return (discrete ? certify::discrete_hinf_norm(s, kNormTolerance) : certify::continuous_hinf_norm(s, kNormTolerance)).norm;
+  return (discrete ? certify::discrete_hinf_norm(s, kGoldenNormTolerance) : certify::continuous_hinf_norm(s, kGoldenNormTolerance)).norm;
 }
 
 // ‖K_a − K_b‖∞ / ‖K_a‖∞, both controllers stable.
@@ -79,7 +79,7 @@ ControllerGoldenComparison compare_controller_with_golden(const ControllerConfig
     c.controller_difference = relative_difference(golden, now.controller, discrete);
   c.same_controller = c.controller_difference && *c.controller_difference <= rtol;
   if (!c.same_controller) {  // not unique at the optimum: is the golden one still certified?
-    const double tol = std::min(rtol, kEquallyOptimalTolerance);
+    const double tol = std::min(rtol, kControllerEquallyOptimalTolerance);
     c.golden_recertified = certify_controller(config.plant, golden, golden_gamma * (1 + tol), config.design);
     c.same_controller = c.golden_recertified->passed;
   }

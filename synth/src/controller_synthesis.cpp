@@ -25,7 +25,7 @@ namespace {
 // certificate lost to round-off), the back-offs (149a) tried in turn (the γ written says which).
 constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3, 1e-2, 5e-2};
 // The back-off's margin is maximised to this relative gap (as the filters', docs/maths.md §6).
-constexpr double kBackoffRelativeGap = 1e-3;
+constexpr double kControllerBackoffRelativeGap = 1e-3;
 // The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
 // 1e3, then golden sections within a decade of the best.
 constexpr double kLogDLow = -6, kLogDHigh = 3;
@@ -33,7 +33,7 @@ constexpr int kGoldenSteps = 8;
 // The closed-loop norm may exceed the solver's γ by this much (the recovery's round-off).
 constexpr double kNormSlack = 1e-6;
 // Relative accuracy of the closed-loop norm.
-constexpr double kNormTolerance = 1e-10;
+constexpr double kClosedLoopNormTolerance = 1e-10;
 
 void check_dimensions(const hinf::GeneralisedPlant& P) {
   const int n = P.n();
@@ -75,14 +75,14 @@ double robust_channel_norm(const hinf::GeneralisedPlant& P, const hinf::StateSpa
   t.C = Eigen::MatrixXd::Zero(channel.E.rows(), ncl);
   t.C.leftCols(n) = channel.E;
   t.D = Eigen::MatrixXd::Zero(channel.E.rows(), channel.H.cols());
-  return (P.time == hinf::TimeDomain::Discrete ? certify::discrete_hinf_norm(t, kNormTolerance)
-                                                : certify::continuous_hinf_norm(t, kNormTolerance))
+  return (P.time == hinf::TimeDomain::Discrete ? certify::discrete_hinf_norm(t, kClosedLoopNormTolerance)
+                                                : certify::continuous_hinf_norm(t, kClosedLoopNormTolerance))
       .norm;
 }
 
 // A mode of A counts as unreached (unseen) when the PBH matrix [A − λI, X] ([A − λI; X]) has a
 // singular value this small relative to its scale (docs/maths.md (126)).
-constexpr double kPbhRelativeTolerance = 1e-10;
+constexpr double kControllerPbhRelativeTolerance = 1e-10;
 
 // The first eigenvalue λ of A outside the stability region (Re λ ≥ 0, or |λ| ≥ 1 in discrete
 // time) at which [A − λI; X] loses rank, if any: an unstable mode X does not see.
@@ -98,7 +98,7 @@ std::optional<std::complex<double>> unseen_unstable_mode(const Eigen::MatrixXd& 
     if (discrete ? std::abs(lambda) < 1 : lambda.real() < 0) continue;
     Eigen::MatrixXcd pbh(n + X.rows(), n);
     pbh << A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n), X.cast<std::complex<double>>();
-    if (Eigen::JacobiSVD<Eigen::MatrixXcd>(pbh).singularValues()(n - 1) <= kPbhRelativeTolerance * scale) return lambda;
+    if (Eigen::JacobiSVD<Eigen::MatrixXcd>(pbh).singularValues()(n - 1) <= kControllerPbhRelativeTolerance * scale) return lambda;
   }
   return std::nullopt;
 }
@@ -190,7 +190,7 @@ ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const 
     return c;
   }
   const certify::HinfNorm h =
-      discrete ? certify::discrete_hinf_norm(cl, kNormTolerance) : certify::continuous_hinf_norm(cl, kNormTolerance);
+      discrete ? certify::discrete_hinf_norm(cl, kClosedLoopNormTolerance) : certify::continuous_hinf_norm(cl, kClosedLoopNormTolerance);
   c.closed_loop_hinf_norm = h.norm;
   c.peak_frequency = h.peak_frequency;
   if (design.robust) {
@@ -237,7 +237,7 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
     if (b > 0) {
       const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
       sdp::Options options = solver_options(x.settings);  // the margin need only be near its maximum
-      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kBackoffRelativeGap);
+      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kControllerBackoffRelativeGap);
       const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
                                                     staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
@@ -284,7 +284,7 @@ void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
   // to 1e-3 only: without noise in y this problem is singular, its infimum approached at the
   // end of the path
   const sdp::Solution sq = minimize_gamma(Q, x.settings, x.observer, "the robust channel's LMI (docs/maths.md (160a))",
-                                          kBackoffRelativeGap);
+                                          kControllerBackoffRelativeGap);
   r.newton_iterations += sq.newton_total;
   r.time_s += sq.elapsed_s;
   r.least_robust_channel_norm = Q.lmi.value(Q.g, sq.x)(0, 0);

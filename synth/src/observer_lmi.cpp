@@ -67,7 +67,7 @@ std::vector<lmi::SparseEntry> observer_basis_error(const ObserverLmi& O, const P
   return rounded_EtE_basis_error(O.lmi, O.lambda, 1, plant);
 }
 
-certify::ObserverPoint observer_point(const ObserverLmi& O, const Plant& plant, const Eigen::VectorXd& x, double g) {
+certify::ObserverPoint observer_point(const ObserverLmi& O, const Plant& /*plant*/, const Eigen::VectorXd& x, double g) {
   certify::ObserverPoint pt;
   pt.P = O.lmi.value(O.P, x);
   pt.Y = O.lmi.value(O.Y, x);

@@ -141,7 +141,7 @@ std::vector<lmi::SparseEntry> theorem1_basis_error(const Theorem1Lmi& T, const P
   return rounded_EtE_basis_error(T.lmi, T.lambda, 2, plant);
 }
 
-certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& plant, const Eigen::VectorXd& x,
+certify::Theorem1Point theorem1_point(const Theorem1Lmi& T, const Plant& /*plant*/, const Eigen::VectorXd& x,
                                       double g) {
   certify::Theorem1Point pt;
   pt.R = T.lmi.value(T.R, x);

@@ -13,30 +13,30 @@ namespace {
 
 // Error(InvalidInput) "NAME<what>", naming the matrix as docs/maths.md (1)–(4) does; a
 // reader re-keys it to where the matrix came from (Error::rekeyed).
-[[noreturn]] void fail(const std::string& name, const std::string& what) {
+[[noreturn]] void fail_plant(const std::string& name, const std::string& what) {
   throw Error::invalid_field(name, what);
 }
 
-std::string dims(const Eigen::MatrixXd& M) {
+std::string plant_dims(const Eigen::MatrixXd& M) {
   return std::to_string(M.rows()) + "x" + std::to_string(M.cols());
 }
 
 void require_nonempty(const Eigen::MatrixXd& M, const std::string& name, const char* what) {
   if (M.rows() == 0 || M.cols() == 0)
-    fail(name, ": must not be empty (" + std::string(what) + "), got " + dims(M));
+    fail_plant(name, ": must not be empty (" + std::string(what) + "), got " + plant_dims(M));
 }
 
 void require_rows(const Eigen::MatrixXd& M, const std::string& name, Eigen::Index rows,
                   const char* source) {
   if (M.rows() != rows)
-    fail(name, ": expected " + std::to_string(rows) + " rows (" + source + "), got " +
+    fail_plant(name, ": expected " + std::to_string(rows) + " rows (" + source + "), got " +
          std::to_string(M.rows()));
 }
 
 void require_cols(const Eigen::MatrixXd& M, const std::string& name, Eigen::Index cols,
                   const char* source) {
   if (M.cols() != cols)
-    fail(name, ": expected " + std::to_string(cols) + " columns (" + source + "), got " +
+    fail_plant(name, ": expected " + std::to_string(cols) + " columns (" + source + "), got " +
          std::to_string(M.cols()));
 }
 
@@ -49,9 +49,9 @@ void require_finite(const Eigen::MatrixXd& M, const std::string& name) {
     for (Eigen::Index i = 0; i < M.rows(); ++i) {
       const std::string entry = ": entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ") = " +
                                 number_text(M(i, j));
-      if (!std::isfinite(M(i, j))) fail(name, entry + " is not finite");
+      if (!std::isfinite(M(i, j))) fail_plant(name, entry + " is not finite");
       if (std::abs(M(i, j)) > kMaxEntryMagnitude)
-        fail(name, entry + ": magnitude above 1e150, whose square (γ², EᵀE) overflows; express the "
+        fail_plant(name, entry + ": magnitude above 1e150, whose square (γ², EᵀE) overflows; express the "
                            "signals in other units");
     }
 }
@@ -62,7 +62,7 @@ void validate_plant(const Plant& plant) {
   const Eigen::MatrixXd& A = plant.A;
   require_nonempty(A, "A", "n >= 1");
   if (A.rows() != A.cols())
-    fail("A", ": must be square (n x n), got " + dims(A));
+    fail_plant("A", ": must be square (n x n), got " + plant_dims(A));
   const Eigen::Index n = A.rows();
 
   require_rows(plant.B, "B", n, "n from A");
@@ -77,10 +77,10 @@ void validate_plant(const Plant& plant) {
   const bool has_H = plant.H.size() > 0;
   const bool has_E = plant.E.size() > 0;
   if (has_H && !has_E)
-    fail("H", " is given (" + dims(plant.H) + ") but E is empty: "
+    fail_plant("H", " is given (" + plant_dims(plant.H) + ") but E is empty: "
          "Delta A = H F E needs both");
   if (has_E && !has_H)
-    fail("E", " is given (" + dims(plant.E) + ") but H is empty: "
+    fail_plant("E", " is given (" + plant_dims(plant.E) + ") but H is empty: "
          "Delta A = H F E needs both");
   if (has_H) {
     require_rows(plant.H, "H", n, "n from A");
@@ -91,11 +91,11 @@ void validate_plant(const Plant& plant) {
   if (!plant.F_blocks.empty()) {
     long total = 0;
     for (int b : plant.F_blocks) {
-      if (b <= 0) fail("F_blocks", ": a block size " + std::to_string(b) + " is not positive");
+      if (b <= 0) fail_plant("F_blocks", ": a block size " + std::to_string(b) + " is not positive");
       total += b;
     }
     if (!has_H || total != plant.H.cols() || total != plant.E.rows())
-      fail("F_blocks", ": the block sizes add up to " + std::to_string(total) + ", but F is " +
+      fail_plant("F_blocks", ": the block sizes add up to " + std::to_string(total) + ", but F is " +
                            std::to_string(plant.E.rows()) + "x" + std::to_string(plant.H.cols()) +
                            " (rows of E x columns of H); the blocks are square and cover F");
   }
