@@ -12,7 +12,6 @@
 namespace hinf::cli {
 namespace {
 
-
 std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
   std::ostringstream os;
   os << "theta_rad_per_sample,frequency_hz,sigma_filter,sigma_kalman\n";
@@ -26,7 +25,7 @@ std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
 const char* kalman_name(bool filtered) { return filtered ? "Kalman filter x_hat(k|k)" : "Kalman predictor"; }
 
 std::string sigma_plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz,
-                        bool filtered) {
+                              bool filtered) {
   std::ostringstream gp;
   const std::string x = hz ? "2" : "1";
   gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
