@@ -40,7 +40,7 @@ constexpr double kAcceptAfterRetriesFloor = 1e-5;
 // After a centring that stalled on round-off with a gap already within this many tol, the
 // next one is at or past the floor: it gets give_up_iterations, not a full budget
 // (measured: random n = 10 67 → 61 Newton iterations, same final gap). Not above 10·tol:
-// a full budget there still reaches 1e-6 on small random plants (test_synth_solver's
+// a full budget there still reaches 1e-6 on small random plants (test_solver.cpp's
 // GapBracketAndCertificate).
 constexpr double kShortBudgetWithin = 10;
 // Next t: μ·t, but no further than the tolerance needs (this safety factor on the ratio

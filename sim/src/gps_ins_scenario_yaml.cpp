@@ -152,7 +152,7 @@ void read_explicit_uncertainty(const YamlMap& f, int nz, GpsInsFilterSettings& s
   if (f.has("C")) s.C = f.matrix("C", nz, 15, MatrixForms::RowsOnly);
 }
 
-GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name, int nz) {
+GpsInsFilterSettings read_gps_ins_filter(const YamlMap& filters, const std::string& name, int nz) {
   require_column_name(filters, name, "a filter's name");
   const YamlMap f = filters.map(name, {"type", "jacobian", "propagation", "process_noise",
                                        "inertia_uncertainty_fraction", "gamma", "scale_factor", "kappa_A", "kappa_C",
@@ -182,12 +182,12 @@ GpsInsFilterSettings read_filter(const YamlMap& filters, const std::string& name
   return s;
 }
 
-void read_filters(const YamlMap& top, const GpsInsScenario& scenario, std::vector<GpsInsFilterSettings>& out) {
+void read_gps_ins_filters(const YamlMap& top, const GpsInsScenario& scenario, std::vector<GpsInsFilterSettings>& out) {
   const int nz = scenario.phase_mode == GpsInsScenario::PhaseMode::DoubleDifference
                      ? models::GpsInsDoubleDifferenceMeasurement::NZ
                      : models::GpsInsMeasurement::NZ;
   read_named_filters(top, static_cast<std::size_t>(kMaxGpsInsFilters), "ekf, rekf, …",
-                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_filter(filters, name, nz)); });
+                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_gps_ins_filter(filters, name, nz)); });
 }
 
 void read_metrics(const YamlMap& top, const GpsInsScenario& s, GpsInsRunOptions& o,
@@ -238,7 +238,7 @@ GpsInsExperiment parse_gps_ins_scenario(const std::string& text, const std::stri
   read_gyro(top, s);
   read_gps(top, s);
   read_estimate(top, e.options.initial_error);
-  read_filters(top, s, e.filters);
+  read_gps_ins_filters(top, s, e.filters);
   read_metrics(top, s, e.options, e.table1_fractions);
   e.plots = top.boolean("plots", e.plots);
   return e;

@@ -13,25 +13,25 @@
 namespace hinf::sim {
 namespace {
 
-namespace ix = models::rigid_body_index;
+namespace rb = models::rigid_body_index;
 constexpr double kDegreesPerRadian = 1 / models::kRadiansPerDegree;
 constexpr const char* kTruthNames[13] = {"q1", "q2", "q3", "q4", "wx", "wy", "wz",
                                          "tx", "ty", "tz", "dtx", "dty", "dtz"};
-constexpr const char* kErrorNames[9] = {"roll", "pitch", "yaw", "wx", "wy", "wz", "tx", "ty", "tz"};
-constexpr const char* kAxes[3] = {"x", "y", "z"};
+constexpr const char* kGyrolessErrorNames[9] = {"roll", "pitch", "yaw", "wx", "wy", "wz", "tx", "ty", "tz"};
+constexpr const char* kGyrolessAxes[3] = {"x", "y", "z"};
 
 // The metrics of one filter in one run, in the order of runs.csv and summary.json.
 std::vector<std::pair<std::string, double>> metric_list(const GyrolessFilterStatistics& s) {
   std::vector<std::pair<std::string, double>> m{{"attitude_rms_deg", s.attitude_rms_norm_deg}};
-  for (int i = 0; i < 3; ++i) m.emplace_back(std::string("attitude_rms_deg_") + kErrorNames[i], s.attitude_rms_deg(i));
+  for (int i = 0; i < 3; ++i) m.emplace_back(std::string("attitude_rms_deg_") + kGyrolessErrorNames[i], s.attitude_rms_deg(i));
   m.emplace_back("torque_rms_nm", s.torque_rms_norm);
-  for (int i = 0; i < 3; ++i) m.emplace_back(std::string("torque_rms_nm_") + kAxes[i], s.torque_rms(i));
+  for (int i = 0; i < 3; ++i) m.emplace_back(std::string("torque_rms_nm_") + kGyrolessAxes[i], s.torque_rms(i));
   m.emplace_back("torque_p95_nm", s.torque_p95);
   m.emplace_back("attitude_max_deg", s.attitude_max_deg);
   m.emplace_back("nees_mean", s.nees_mean);
   m.emplace_back("torque_rate_correlation", s.torque_rate_correlation_norm);
   for (int i = 0; i < 3; ++i)
-    m.emplace_back(std::string("torque_rate_correlation_") + kAxes[i], s.torque_rate_correlation(i));
+    m.emplace_back(std::string("torque_rate_correlation_") + kGyrolessAxes[i], s.torque_rate_correlation(i));
   m.emplace_back("lambda_cap_hits", static_cast<double>(s.lambda_cap_hits));
   m.emplace_back("lambda_cap_fraction", s.steps ? static_cast<double>(s.lambda_cap_hits) / s.steps : 0.0);
   m.emplace_back("failed_steps", static_cast<double>(s.failed_steps));
@@ -42,7 +42,7 @@ std::vector<std::pair<std::string, double>> metric_list(const GyrolessFilterStat
 // The sample's error and 1σ in report units: deg for the attitude, rad/s, N m.
 Eigen::Matrix<double, 9, 1> in_report_units(const Eigen::Matrix<double, 9, 1>& v) {
   Eigen::Matrix<double, 9, 1> r = v;
-  r.segment<3>(ix::kAttitudeError) *= kDegreesPerRadian;
+  r.segment<3>(rb::kAttitudeError) *= kDegreesPerRadian;
   return r;
 }
 
@@ -50,7 +50,7 @@ Eigen::Matrix<double, 9, 1> in_report_units(const Eigen::Matrix<double, 9, 1>& v
 struct Figure {
   std::string file, title;
   std::vector<std::size_t> filters;
-  int block;  // ix::kAttitudeError or ix::kTorqueError; -1 for the true torque
+  int block;  // rb::kAttitudeError or rb::kTorqueError; -1 for the true torque
 };
 
 std::vector<Figure> figures(const GyrolessExperiment& e) {
@@ -70,9 +70,9 @@ std::vector<Figure> figures(const GyrolessExperiment& e) {
   const auto pair = [&](int n, const char* who, const std::vector<std::size_t>& f) {
     if (f.empty()) return;
     out.push_back({"fig" + std::to_string(n) + "_" + who + "_torque_error.png", std::string(who) + ": torque error", f,
-                   ix::kTorqueError});
+                   rb::kTorqueError});
     out.push_back({"fig" + std::to_string(n + 1) + "_" + who + "_attitude_error.png",
-                   std::string(who) + ": attitude error (2 dq_v)", f, ix::kAttitudeError});
+                   std::string(who) + ": attitude error (2 dq_v)", f, rb::kAttitudeError});
   };
   pair(2, "aekf_sweep", aekf_sweep);
   pair(4, "astekf_sweep", astekf_sweep);
@@ -87,7 +87,7 @@ std::string plot_data(const std::vector<std::vector<GyrolessSample>>& samples) {
   const std::size_t steps = samples.empty() ? 0 : samples.front().size();
   for (std::size_t k = 0; k < steps; ++k) {
     append_num(out, samples.front()[k].t);
-    for (int i = 0; i < 3; ++i) out += ' ', append_num(out, samples.front()[k].truth(ix::kTorque + i));
+    for (int i = 0; i < 3; ++i) out += ' ', append_num(out, samples.front()[k].truth(rb::kTorque + i));
     for (const auto& filter : samples) {
       const auto err = in_report_units(filter[k].error);
       for (int i = 0; i < 9; ++i) out += ' ', append_num(out, err(i));
@@ -106,8 +106,8 @@ std::string plot_script(const GyrolessExperiment& e, const std::vector<Figure>& 
     gp << "set output " << gnuplot_quoted(png[i]) << "\nset multiplot layout 3,1 title "
        << gnuplot_quoted(title + ": " + F.title + ", run 0") << " noenhanced\n";
     for (int c = 0; c < 3; ++c) {
-      const bool torque = F.block != ix::kAttitudeError;
-      const std::string label = torque ? std::string("T_") + kAxes[c] + " (N m)" : std::string(kErrorNames[c]) + " (deg)";
+      const bool torque = F.block != rb::kAttitudeError;
+      const std::string label = torque ? std::string("T_") + kGyrolessAxes[c] + " (N m)" : std::string(kGyrolessErrorNames[c]) + " (deg)";
       gp << "set ylabel " << gnuplot_quoted(label) << " noenhanced\n"
          << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
          << (c == 0 ? "set key outside right top\n" : "unset key\n") << "plot ";
@@ -136,9 +136,9 @@ std::string format_gyroless_trajectory_csv(const GyrolessExperiment& e,
   std::string out = "t";
   for (const char* n : kTruthNames) out += std::string(",truth_") + n;
   for (const auto& f : e.filters) {
-    for (const char* n : kErrorNames) out += "," + f.name + "_err_" + n;
-    for (const char* n : kErrorNames) out += "," + f.name + "_sig_" + n;
-    for (const char* a : kAxes) out += "," + f.name + "_Q_" + a;
+    for (const char* n : kGyrolessErrorNames) out += "," + f.name + "_err_" + n;
+    for (const char* n : kGyrolessErrorNames) out += "," + f.name + "_sig_" + n;
+    for (const char* a : kGyrolessAxes) out += "," + f.name + "_Q_" + a;
     out += "," + f.name + "_lambda_att," + f.name + "_lambda_rate," + f.name + "_lambda_torque," + f.name + "_nees";
   }
   out += '\n';

@@ -126,7 +126,7 @@ void read_adaptive(const YamlMap& f, runtime::AdaptiveQSettings& a) {
   a.floor = f.nonnegative("floor", a.floor);
 }
 
-GyrolessFilterSettings read_filter(const YamlMap& filters, const std::string& name) {
+GyrolessFilterSettings read_gyroless_filter(const YamlMap& filters, const std::string& name) {
   require_column_name(filters, name, "a filter's name");
   const YamlMap f = filters.map(name, {"type", "Q", "forgetting", "weakening", "alpha", "fading_form", "lambda_max",
                                        "Q_initial", "scale", "epsilon", "window", "law", "floor"},
@@ -150,9 +150,9 @@ GyrolessFilterSettings read_filter(const YamlMap& filters, const std::string& na
   return s;
 }
 
-void read_filters(const YamlMap& top, std::vector<GyrolessFilterSettings>& out) {
+void read_gyroless_filters(const YamlMap& top, std::vector<GyrolessFilterSettings>& out) {
   read_named_filters(top, static_cast<std::size_t>(kMaxGyrolessFilters), "aekf, astekf, aaekf, …",
-                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_filter(filters, name)); });
+                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_gyroless_filter(filters, name)); });
 }
 
 // sweep: {<filter>: [Q, …]}: a copy of the (aekf or astekf) filter per Q.
@@ -214,7 +214,7 @@ GyrolessExperiment parse_gyroless_scenario(const std::string& text, const std::s
   read_estimate(top, e.options.estimate);
   if (top.has("attitude_error")) top.choice("attitude_error", {"multiplicative"});
   if (top.has("q_discretisation")) top.choice("q_discretisation", {"first_order"});
-  read_filters(top, e.filters);
+  read_gyroless_filters(top, e.filters);
   read_sweep(top, e.filters);
   read_metrics(top, s, e.options);
   e.plots = top.boolean("plots", e.plots);

@@ -14,8 +14,8 @@
 namespace hinf::sim {
 namespace {
 
-constexpr const char* kAxes[3] = {"x", "y", "z"};
-constexpr const char* kStateNames[6] = {"x", "y", "z", "vx", "vy", "vz"};
+constexpr const char* kManoeuvringAxes[3] = {"x", "y", "z"};
+constexpr const char* kManoeuvringStateNames[6] = {"x", "y", "z", "vx", "vy", "vz"};
 
 // One metric of one filter in one run: under windows.<group> (or at the filter's top level if
 // the group is empty), per axis (3 values) or a scalar (1).
@@ -65,7 +65,7 @@ std::vector<Metric> metric_list(const ManoeuvringExperiment& e, const ManoeuvreF
 
 std::string column_name(const Metric& m, std::size_t i) {
   std::string c = m.group.empty() ? m.name : m.group + "_" + m.name;
-  if (m.value.size() == 3) c += std::string("_") + kAxes[i];
+  if (m.value.size() == 3) c += std::string("_") + kManoeuvringAxes[i];
   return c;
 }
 
@@ -140,7 +140,7 @@ void plot_filter(std::ostringstream& gp, const std::string& data, std::size_t f,
     gp << "set output " << gnuplot_quoted(png[static_cast<std::size_t>(fig)]) << "\nset multiplot layout 3,1 title "
        << gnuplot_quoted(title + ": " + what[fig] + ", run 0") << " noenhanced\n";
     for (int c = 0; c < 3; ++c) {
-      gp << "set ylabel " << gnuplot_quoted(std::string(kAxes[c]) + " " + what[fig]) << " noenhanced\n"
+      gp << "set ylabel " << gnuplot_quoted(std::string(kManoeuvringAxes[c]) + " " + what[fig]) << " noenhanced\n"
          << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
          << (c == 0 ? "set key outside right top\n" : "unset key\n");
       const std::string t = fig == 2 ? "2" : "1";
@@ -189,20 +189,20 @@ std::string plot_data(const std::vector<std::vector<ManoeuvringSample>>& samples
 std::string format_manoeuvring_trajectory_csv(const ManoeuvringExperiment& e,
                                               const std::vector<std::vector<ManoeuvringSample>>& samples) {
   std::string out = "t";
-  for (const char* n : kStateNames) out += std::string(",true_") + n;
+  for (const char* n : kManoeuvringStateNames) out += std::string(",true_") + n;
   out += ",u_time";
-  for (const char* a : kAxes) out += std::string(",true_u") + a;
-  for (const char* a : kAxes) out += std::string(",uc_") + a;
-  for (const char* a : kAxes) out += std::string(",meas_") + a;
+  for (const char* a : kManoeuvringAxes) out += std::string(",true_u") + a;
+  for (const char* a : kManoeuvringAxes) out += std::string(",uc_") + a;
+  for (const char* a : kManoeuvringAxes) out += std::string(",meas_") + a;
   out += ",range";
   for (const auto& f : e.filters) {
-    for (const char* n : kStateNames) out += "," + f.name + "_est_" + n;
-    for (const char* n : kStateNames) out += "," + f.name + "_sigma_" + n;
-    for (const char* a : kAxes) out += "," + f.name + "_uhat_" + a;
+    for (const char* n : kManoeuvringStateNames) out += "," + f.name + "_est_" + n;
+    for (const char* n : kManoeuvringStateNames) out += "," + f.name + "_sigma_" + n;
+    for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uhat_" + a;
     if (with_paper(f))
-      for (const char* a : kAxes) out += "," + f.name + "_uvar_paper_" + a;
+      for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uvar_paper_" + a;
     if (with_innovation(f))
-      for (const char* a : kAxes) out += "," + f.name + "_uvar_innov_" + a;
+      for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uvar_innov_" + a;
     out += "," + f.name + "_nis," + f.name + "_window_nis," + f.name + "_alarm";
   }
   out += '\n';

@@ -140,7 +140,7 @@ void read_detector(const YamlMap& f, ManoeuvreFilterSettings& s) {
   if (s.detector_false_alarm >= 1) d.fail_value("p_false_alarm", s.detector_false_alarm, "must be in (0, 1)");
 }
 
-ManoeuvreFilterSettings read_filter(const YamlMap& filters, const std::string& name) {
+ManoeuvreFilterSettings read_manoeuvre_filter(const YamlMap& filters, const std::string& name) {
   require_column_name(filters, name, "a filter's name");
   const YamlMap f = filters.map(name, {"transition", "process_noise_psd", "predict_with_chaser_control",
                                        "maneuver_covariance", "exact_substeps", "detector"},
@@ -168,9 +168,9 @@ ManoeuvreFilterSettings read_filter(const YamlMap& filters, const std::string& n
   return s;
 }
 
-void read_filters(const YamlMap& top, std::vector<ManoeuvreFilterSettings>& out) {
+void read_manoeuvre_filters(const YamlMap& top, std::vector<ManoeuvreFilterSettings>& out) {
   read_named_filters(top, static_cast<std::size_t>(kMaxManoeuvringFilters), "transient, …",
-                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_filter(filters, name)); });
+                     [&](const YamlMap& filters, const std::string& name) { out.push_back(read_manoeuvre_filter(filters, name)); });
 }
 
 // windows: {name: [start, end]}, 0 ≤ start < end ≤ duration.
@@ -212,7 +212,7 @@ ManoeuvringExperiment parse_manoeuvring_scenario(const std::string& text, const 
   read_manoeuvres(top, s);
   read_sensors(top, s);
   read_estimate(top, e.options.estimate);
-  read_filters(top, e.filters);
+  read_manoeuvre_filters(top, e.filters);
   read_metrics(top, s, e.options);
   e.plots = top.boolean("plots", e.plots);
   return e;

@@ -23,10 +23,12 @@
 #include "hinf/certify/stability.hpp"
 #include "hinf/certify/worst_case.hpp"
 #include "hinf/common/error.hpp"
+#include "example_plants.hpp"
 #include "random_plants.hpp"
 
 using Eigen::MatrixXd;
 using hinf::test::random_matrix;
+using hinf::test::scalar_plant;
 using hinf::test::random_nominal_plant;
 using hinf::test::random_stable_matrix;
 
@@ -137,18 +139,6 @@ std::vector<double> nelder_mead(const std::function<double(const std::vector<dou
   const std::size_t b = static_cast<std::size_t>(std::min_element(fs.begin(), fs.end()) - fs.begin());
   *fbest = fs[b];
   return s[b];
-}
-
-hinf::Plant scalar_plant(double a, double b, double c, double d, double l) {
-  hinf::Plant p;
-  p.A = MatrixXd::Constant(1, 1, a);
-  p.B = MatrixXd::Constant(1, 1, b);
-  p.C = MatrixXd::Constant(1, 1, c);
-  p.D = MatrixXd::Constant(1, 1, d);
-  p.L = MatrixXd::Constant(1, 1, l);
-  p.H.resize(1, 0);
-  p.E.resize(0, 1);
-  return p;
 }
 
 double error_norm(const hinf::Plant& plant, const hinf::Filter& f, double tol = 1e-10) {

@@ -12,7 +12,7 @@ using namespace hinf::models;
 namespace ix = hinf::models::gps_ins_index;
 
 namespace {
-using State = GpsInsProcess::State;
+using GpsState = GpsInsProcess::State;
 using Mat15 = GpsInsProcess::Jacobian;
 
 Eigen::Vector3d unit(std::mt19937& g) {
@@ -48,10 +48,10 @@ GpsInsEpoch random_epoch(std::mt19937& g) {
 }
 
 // Random states; every other one with |σ| in [0.95, 0.999].
-State random_state(std::mt19937& g, int i) {
+GpsState random_state(std::mt19937& g, int i) {
   std::normal_distribution<double> nd;
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  State x;
+  GpsState x;
   x.segment<3>(ix::kPosition) = 100.0 * Eigen::Vector3d(nd(g), nd(g), nd(g));
   x.segment<3>(ix::kVelocity) = 0.2 * Eigen::Vector3d(nd(g), nd(g), nd(g));
   const double norm = (i % 2) ? 0.95 + 0.049 * u(g) : 0.9 * u(g);
@@ -71,8 +71,8 @@ double step(int k) {
 TEST(GpsInsModel, BoxplusAndBoxminusAreInverse) {
   std::mt19937 g(1);
   for (int i = 0; i < 100; ++i) {
-    const State x = random_state(g, i);
-    State dx = 1e-2 * random_state(g, 0);
+    const GpsState x = random_state(g, i);
+    GpsState dx = 1e-2 * random_state(g, 0);
     dx.segment<3>(ix::kAttitude) *= 0.1;
     EXPECT_LE((gps_ins_boxminus(gps_ins_boxplus(x, dx), x) - dx).norm(), 1e-12 * (1 + dx.norm())) << i;
     // ⊞ composes the DCMs: R(σ ⊞ Δσ) = R(Δσ) R(σ)
@@ -97,13 +97,13 @@ TEST_P(GpsInsPropagationTest, ProcessJacobianMatchesCentralDifferences) {
     const GpsInsEpoch e = random_epoch(g);
     full.set_epoch(e);
     paper.set_epoch(e);
-    const State x = random_state(g, i);
+    const GpsState x = random_state(g, i);
     const Eigen::Vector3d T = 5.0 * unit(g);
     Mat15 fd;
     for (int k = 0; k < 15; ++k) {
-      State d = State::Zero();
+      GpsState d = GpsState::Zero();
       d(k) = step(k);
-      fd.col(k) = gps_ins_boxminus(full.f(gps_ins_boxplus(x, d), T), full.f(gps_ins_boxplus(x, State(-d)), T)) /
+      fd.col(k) = gps_ins_boxminus(full.f(gps_ins_boxplus(x, d), T), full.f(gps_ins_boxplus(x, GpsState(-d)), T)) /
                   (2 * step(k));
     }
     const double err_full = (fd - full.F(x, T)).cwiseAbs().maxCoeff();
@@ -118,12 +118,12 @@ TEST_P(GpsInsPropagationTest, ProcessJacobianMatchesCentralDifferences) {
 
 // ∂h/∂Δx by central differences of h in error coordinates.
 template <class Measurement>
-Eigen::Matrix<double, Measurement::NZ, 15> h_central_differences(const Measurement& m, const State& x) {
+Eigen::Matrix<double, Measurement::NZ, 15> h_central_differences(const Measurement& m, const GpsState& x) {
   Eigen::Matrix<double, Measurement::NZ, 15> fd;
   for (int k = 0; k < 15; ++k) {
-    State d = State::Zero();
+    GpsState d = GpsState::Zero();
     d(k) = step(k);
-    fd.col(k) = (m.h(gps_ins_boxplus(x, d)) - m.h(gps_ins_boxplus(x, State(-d)))) / (2 * step(k));
+    fd.col(k) = (m.h(gps_ins_boxplus(x, d)) - m.h(gps_ins_boxplus(x, GpsState(-d)))) / (2 * step(k));
   }
   return fd;
 }
@@ -151,7 +151,7 @@ TEST(GpsInsModel, MeasurementJacobianMatchesCentralDifferences) {
     const GpsInsEpoch e = random_epoch(g);
     full.set_epoch(e);
     paper.set_epoch(e);
-    const State x = random_state(g, i);
+    const GpsState x = random_state(g, i);
     const Eigen::Matrix<double, NZ, 15> fd = h_central_differences(full, x);
     expect_jacobian_blocks_match(fd, full.H(x), i);
     // `paper` drops the gyro's attitude block 4[(Ω+ν)×]; the differences see it
@@ -175,7 +175,7 @@ TEST(GpsInsModel, DoubleDifferencesAreSatelliteDifferencesWithCorrelatedNoise) {
     const GpsInsEpoch e = random_epoch(g);
     single.set_epoch(e);
     dd.set_epoch(e);
-    const State x = random_state(g, i);
+    const GpsState x = random_state(g, i);
     const auto zs = single.h(x);
     const auto zd = dd.h(x);
     EXPECT_EQ(zd.head<7>(), zs.head<7>());
@@ -240,7 +240,7 @@ TEST(GpsInsModel, RateEquationIsTheDerivativeOfTheTruth) {
     const auto [sigma, w] = relative(s, t);
     const Eigen::Vector3d w_dot_fd = (relative(rk4(s, h), t + h).second - relative(rk4(s, -h), t - h).second) / (2 * h);
     model.set_epoch(frames(t));
-    State x = State::Zero();
+    GpsState x = GpsState::Zero();
     x.segment<3>(ix::kAttitude) = sigma;
     x.segment<3>(ix::kRate) = w;
     const Eigen::Vector3d w_dot = model.rate_derivative(x, T);
@@ -282,18 +282,18 @@ TEST(GpsInsModel, ShadowSwitchKeepsTheDcmAndTheErrorCovariance) {
   std::mt19937 g(5);
   const GpsInsProcess model(fast_parameters(GpsInsJacobian::Full, 1.0));
   for (int i = 0; i < 50; ++i) {
-    State x = random_state(g, 1);
+    GpsState x = random_state(g, 1);
     x.segment<3>(ix::kAttitude) = mrp_shadow(x.segment<3>(ix::kAttitude));  // |σ| > 1
-    State xs = x;
+    GpsState xs = x;
     Mat15 P = Mat15::Identity() * 3.0;
     model.normalise(xs, P);
     EXPECT_LE(xs.segment<3>(ix::kAttitude).norm(), 1.0);
     EXPECT_LE((mrp_to_dcm(xs.segment<3>(ix::kAttitude)) - mrp_to_dcm(x.segment<3>(ix::kAttitude))).norm(), 1e-14);
     EXPECT_EQ(P, Mat15::Identity() * 3.0);
     // error of a perturbed truth relative to x and to its switched copy: the same
-    State d = State::Zero();
+    GpsState d = GpsState::Zero();
     d.segment<3>(ix::kAttitude) = 1e-3 * unit(g);
-    const State truth = gps_ins_boxplus(x, d);
+    const GpsState truth = gps_ins_boxplus(x, d);
     EXPECT_LE((gps_ins_boxminus(truth, xs) - gps_ins_boxminus(truth, x)).norm(), 1e-12);  // rounding
   }
 }
@@ -329,8 +329,8 @@ TEST(GpsInsModel, ProcessNoiseAndRekfUncertaintyHaveTheDocumentedBlocks) {
   const GpsInsEpoch e = random_epoch(g);
   model.set_epoch(e);
   meas.set_epoch(e);
-  const State x = random_state(g, 0);
-  State s;
+  const GpsState x = random_state(g, 0);
+  GpsState s;
   s.setConstant(2.0);
   const auto u = gps_ins_rekf_uncertainty(model.continuous_jacobian(x), meas.H(x), s, 2.0, 0.1, 1e-3);
   // A_k = κ_A Δt F_rate diag(s): only the rate equation's rows (197)
@@ -339,7 +339,7 @@ TEST(GpsInsModel, ProcessNoiseAndRekfUncertaintyHaveTheDocumentedBlocks) {
   const Eigen::Matrix<double, 3, 15> F_rate = model.continuous_jacobian(x).middleRows<3>(ix::kRate);
   EXPECT_GT(F_rate.norm(), 0.0);
   EXPECT_LE((u.A.middleRows<3>(ix::kRate) - 0.1 * 2.0 * F_rate * 2.0).norm(), 1e-15 * F_rate.norm());
-  State L_diag = State::Zero();
+  GpsState L_diag = GpsState::Zero();
   L_diag.segment<6>(ix::kAttitude).setConstant(0.5);  // σ and ω only
   EXPECT_EQ(u.L, Mat15(L_diag.asDiagonal()));
   const auto H = meas.H(x);

@@ -6,20 +6,22 @@
 #include <cmath>
 #include <limits>
 
+#include "cw_closed_form.hpp"
 #include "hinf/models/hill.hpp"
 
 using hinf::models::Discretisation;
 using hinf::models::HillModel;
-using State = HillModel::State;
+using HillState = HillModel::State;
 using Input = HillModel::Input;
+using hinf_test::cw_closed_form;
 
 namespace {
 
 // The equations docs/maths.md (62) as scalars: xdd = 3w^2 x + 2w yd + Fx/m, ydd = -2w xd + Fy/m,
 // zdd = -w^2 z + Fz/m, with thrust F = u_ext + K s.
-State rhs(const State& s, const Input& u_ext, double w, double m, const HillModel::Gain& K) {
+HillState rhs(const HillState& s, const Input& u_ext, double w, double m, const HillModel::Gain& K) {
   const Input F = u_ext + K * s;
-  State d;
+  HillState d;
   d(0) = s(3);
   d(1) = s(4);
   d(2) = s(5);
@@ -29,29 +31,15 @@ State rhs(const State& s, const Input& u_ext, double w, double m, const HillMode
   return d;
 }
 
-State rk4(State s, const Input& u, double w, double m, const HillModel::Gain& K, double T, int steps) {
+HillState rk4(HillState s, const Input& u, double w, double m, const HillModel::Gain& K, double T, int steps) {
   const double h = T / steps;
   for (int i = 0; i < steps; ++i) {
-    const State k1 = rhs(s, u, w, m, K);
-    const State k2 = rhs(s + 0.5 * h * k1, u, w, m, K);
-    const State k3 = rhs(s + 0.5 * h * k2, u, w, m, K);
-    const State k4 = rhs(s + h * k3, u, w, m, K);
+    const HillState k1 = rhs(s, u, w, m, K);
+    const HillState k2 = rhs(s + 0.5 * h * k1, u, w, m, K);
+    const HillState k3 = rhs(s + 0.5 * h * k2, u, w, m, K);
+    const HillState k4 = rhs(s + h * k3, u, w, m, K);
     s += h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
   }
-  return s;
-}
-
-// Closed-form CW solution (x radial, y along-track, z normal), no thrust.
-State cw_closed_form(const State& s0, double n, double t) {
-  const double c = std::cos(n * t), sn = std::sin(n * t);
-  const double x0 = s0(0), y0 = s0(1), z0 = s0(2), xd = s0(3), yd = s0(4), zd = s0(5);
-  State s;
-  s(0) = (4 - 3 * c) * x0 + sn / n * xd + 2 / n * (1 - c) * yd;
-  s(1) = 6 * (sn - n * t) * x0 + y0 - 2 / n * (1 - c) * xd + (4 * sn - 3 * n * t) / n * yd;
-  s(2) = c * z0 + sn / n * zd;
-  s(3) = 3 * n * sn * x0 + c * xd + 2 * sn * yd;
-  s(4) = -6 * n * (1 - c) * x0 - 2 * sn * xd + (4 * c - 3) * yd;
-  s(5) = -n * sn * z0 + c * zd;
   return s;
 }
 
@@ -63,7 +51,7 @@ HillModel::Gain paper_K() {
   return K;
 }
 
-double rel_err(const State& a, const State& b) { return (a - b).norm() / std::max(1.0, b.norm()); }
+double rel_err(const HillState& a, const HillState& b) { return (a - b).norm() / std::max(1.0, b.norm()); }
 
 }  // namespace
 
@@ -71,7 +59,7 @@ TEST(HillModel, ContinuousDynamicsMatchScalarEquations) {
   const double w = 1.1e-3, m = 500.0;
   const HillModel::Gain K = paper_K();
   const HillModel open(w, m, 1.0), closed(w, m, 1.0, K);
-  const State s = (State() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
+  const HillState s = (HillState() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
   const Input u(0.3, -0.2, 0.1);
   EXPECT_LE((open.xdot(s, u) - rhs(s, u, w, m, HillModel::Gain::Zero())).norm(), 1e-15 * rhs(s, u, w, m, HillModel::Gain::Zero()).norm() + 1e-18);
   EXPECT_LE((closed.xdot(s, u) - rhs(s, u, w, m, K)).norm(), 1e-14 * rhs(s, u, w, m, K).norm());
@@ -81,16 +69,16 @@ TEST(HillModel, EulerIsOneExplicitEulerStep) {
   const double w = 7.2722e-5, m = 1000.0, T = 0.1;
   const HillModel::Gain K = paper_K();
   const HillModel model(w, m, T, K, Discretisation::Euler);
-  const State s = (State() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
+  const HillState s = (HillState() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
   const Input u(1.0, -2.0, 0.5);
-  const State expect = s + T * rhs(s, u, w, m, K);
+  const HillState expect = s + T * rhs(s, u, w, m, K);
   EXPECT_LE(rel_err(model.f(s, u), expect), 1e-15);
   EXPECT_EQ(model.F(s, u), model.A());
   // Jacobian of f (linear): columns by central differences.
   for (int j = 0; j < 6; ++j) {
-    State e = State::Zero();
+    HillState e = HillState::Zero();
     e(j) = 1.0;
-    const State col = (model.f(s + e, u) - model.f(s - e, u)) / 2.0;
+    const HillState col = (model.f(s + e, u) - model.f(s - e, u)) / 2.0;
     EXPECT_LE((col - model.A().col(j)).norm(), 1e-9) << "column " << j;
   }
 }
@@ -99,19 +87,19 @@ TEST(HillModel, ZohWithoutThrustEqualsClohessyWiltshireClosedForm) {
   // A long sample time (a sixth of an orbit) so the test sees the orbital dynamics.
   const double n = 1.1e-3, T = 2 * M_PI / n / 6;
   const HillModel model(n, 1000.0, T, Discretisation::ZeroOrderHold);
-  const std::array<State, 3> states = {(State() << 600, 550, 1040, 0.02, -0.08, 0.03).finished(),
-                                       (State() << -10, 0, 5, 0, 0.5, -0.1).finished(),
-                                       (State() << 0, 100, 0, 0.3, 0, 0).finished()};
-  for (const State& s0 : states) EXPECT_LE(rel_err(model.f(s0, Input::Zero()), cw_closed_form(s0, n, T)), 1e-12);
+  const std::array<HillState, 3> states = {(HillState() << 600, 550, 1040, 0.02, -0.08, 0.03).finished(),
+                                       (HillState() << -10, 0, 5, 0, 0.5, -0.1).finished(),
+                                       (HillState() << 0, 100, 0, 0.3, 0, 0).finished()};
+  for (const HillState& s0 : states) EXPECT_LE(rel_err(model.f(s0, Input::Zero()), cw_closed_form(s0, n, T)), 1e-12);
   // Paper's parameters too (tiny wT).
   const HillModel paper(7.2722e-5, 1000.0, 0.1, Discretisation::ZeroOrderHold);
-  for (const State& s0 : states)
+  for (const HillState& s0 : states)
     EXPECT_LE(rel_err(paper.f(s0, Input::Zero()), cw_closed_form(s0, 7.2722e-5, 0.1)), 1e-13);
 }
 
 TEST(HillModel, ZohThrustAndControlMatchRk4) {
   const double w = 1.1e-3, m = 500.0, T = 20.0;
-  const State s0 = (State() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
+  const HillState s0 = (HillState() << 600, 550, 1040, 0.02, -0.08, 0.03).finished();
   const Input u(0.4, -0.3, 0.2);
   const HillModel open(w, m, T, Discretisation::ZeroOrderHold);
   EXPECT_LE(rel_err(open.f(s0, u), rk4(s0, u, w, m, HillModel::Gain::Zero(), T, 2000)), 1e-11);

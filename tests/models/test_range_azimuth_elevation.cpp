@@ -9,11 +9,11 @@
 #include "hinf/models/range_azimuth_elevation.hpp"
 
 using hinf::models::RangeAzimuthElevation;
-using State = RangeAzimuthElevation::State;
+using RaeState = RangeAzimuthElevation::State;
 using Vec = RangeAzimuthElevation::Vector;
 
 namespace {
-State pos(double x, double y, double z) { return (State() << x, y, z, 0.1, -0.2, 0.3).finished(); }
+RaeState pos(double x, double y, double z) { return (RaeState() << x, y, z, 0.1, -0.2, 0.3).finished(); }
 
 Eigen::Matrix3d rotation(double yaw, double pitch, double roll) {
   return (Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
@@ -49,11 +49,11 @@ TEST(RangeAzimuthElevation, JacobianMatchesCentralDifferences) {
   std::uniform_real_distribution<double> u(-1000, 1000), ang(-M_PI, M_PI);
   for (int trial = 0; trial < 50; ++trial) {
     const RangeAzimuthElevation m(rotation(ang(g), 0.5 * ang(g), ang(g)));
-    const State x = pos(u(g), u(g), u(g));
+    const RaeState x = pos(u(g), u(g), u(g));
     const auto H = m.H(x);
     const double h = 1e-4;
     for (int j = 0; j < 6; ++j) {
-      State e = State::Zero();
+      RaeState e = RaeState::Zero();
       e(j) = h;
       Vec d = m.residual(m.h(x + e), m.h(x - e)) / (2 * h);
       for (int i = 0; i < 3; ++i)
@@ -67,12 +67,12 @@ TEST(RangeAzimuthElevation, CartesianConversionInvertsH) {
   std::uniform_real_distribution<double> u(-1000, 1000), ang(-M_PI, M_PI);
   for (int trial = 0; trial < 100; ++trial) {
     const RangeAzimuthElevation m(rotation(ang(g), 0.5 * ang(g), ang(g)));
-    const State x = pos(u(g), u(g), u(g));
+    const RaeState x = pos(u(g), u(g), u(g));
     const Eigen::Vector3d p = m.position_from_measurement(m.h(x));
     EXPECT_LE((p - x.head<3>()).norm(), 1e-12 * x.head<3>().norm());
     // and h o conversion = identity on (rho, alpha, beta) in range
     const Vec y(std::abs(u(g)) + 1.0, ang(g), 0.49 * ang(g));
-    const Vec y2 = m.h((State() << m.position_from_measurement(y), 0, 0, 0).finished());
+    const Vec y2 = m.h((RaeState() << m.position_from_measurement(y), 0, 0, 0).finished());
     EXPECT_LE(m.residual(y2, y).norm(), 1e-12 * (1 + y.norm()));
   }
 }
@@ -84,7 +84,7 @@ TEST(RangeAzimuthElevation, ConvertedCovarianceIsInverseJacobianSandwich) {
   const double s_rho = 0.1, s_a = 1e-3, s_b = 2e-3;
   const Eigen::Matrix3d Sigma = Eigen::Vector3d(s_rho * s_rho, s_a * s_a, s_b * s_b).asDiagonal();
   Eigen::Matrix3d first = Eigen::Matrix3d::Zero();
-  for (const State& x : {pos(600, 550, 1040), pos(-50, 20, 3)}) {
+  for (const RaeState& x : {pos(600, 550, 1040), pos(-50, 20, 3)}) {
     const Vec y = m.h(x);
     const Eigen::Matrix3d Hp = m.H(x).leftCols<3>();
     const Eigen::Matrix3d Hinv = Hp.inverse();

@@ -4,31 +4,18 @@
 
 #include <cmath>
 
+#include "cw_closed_form.hpp"
 #include "hinf/models/two_body.hpp"
 
 namespace {
 
 using hinf::models::RelativeTwoBody;
+using hinf_test::cw_closed_form;
 using Vector3 = RelativeTwoBody::Vector3;
 using Vector6 = RelativeTwoBody::Vector6;
 
 constexpr double kMu = 3.986004418e14;
 constexpr double kOmega = 7.2722e-5;
-
-// Closed-form Clohessy–Wiltshire solution (x radial, y along-track, z normal), written
-// out here from the textbook formula, not from the code under test.
-Vector6 cw_closed_form(const Vector6& s0, double w, double t) {
-  const double c = std::cos(w * t), s = std::sin(w * t);
-  const double x0 = s0(0), y0 = s0(1), z0 = s0(2), vx = s0(3), vy = s0(4), vz = s0(5);
-  Vector6 r;
-  r(0) = (4 - 3 * c) * x0 + s / w * vx + 2 / w * (1 - c) * vy;
-  r(1) = 6 * (s - w * t) * x0 + y0 - 2 / w * (1 - c) * vx + (4 * s - 3 * w * t) / w * vy;
-  r(2) = c * z0 + s / w * vz;
-  r(3) = 3 * w * s * x0 + c * vx + 2 * s * vy;
-  r(4) = -6 * w * (1 - c) * x0 - 2 * s * vx + (4 * c - 3) * vy;
-  r(5) = -w * s * z0 + c * vz;
-  return r;
-}
 
 Vector6 propagate(const RelativeTwoBody& m, Vector6 s, double horizon, double dt) {
   const long n = std::lround(horizon / dt);

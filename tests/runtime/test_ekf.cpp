@@ -11,8 +11,11 @@
 #include "hinf/models/hill.hpp"
 #include "hinf/models/linear.hpp"
 #include "hinf/models/range_azimuth_elevation.hpp"
+#include "kalman_test_values.hpp"
 
 using namespace hinf::runtime;
+using hinf_test::paper_Q;
+using hinf_test::rel;
 using hinf::models::CartesianPosition;
 using hinf::models::HillModel;
 using hinf::models::LinearMeasurement;
@@ -42,12 +45,6 @@ Eigen::Matrix<double, N, 1> gauss(std::mt19937& g) {
   Eigen::Matrix<double, N, 1> v;
   for (int i = 0; i < N; ++i) v(i) = nd(g);
   return v;
-}
-double rel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).norm() / std::max(1.0, b.norm()); }
-Mat6 paper_Q() {
-  Vec6 b;
-  b << 0.05, 0.05, 0.05, 0.001, 0.001, 0.001;
-  return (b.array() * b.array()).matrix().asDiagonal();
 }
 }  // namespace
 

@@ -9,8 +9,11 @@
 #include "hinf/models/cartesian_position.hpp"
 #include "hinf/models/hill.hpp"
 #include "hinf/runtime/rekf.hpp"
+#include "kalman_test_values.hpp"
 
 using namespace hinf::runtime;
+using hinf_test::paper_Q;
+using hinf_test::rel;
 using hinf::models::CartesianPosition;
 using hinf::models::HillModel;
 
@@ -23,17 +26,11 @@ Vec6 gauss6(std::mt19937& g) {
   for (int i = 0; i < 6; ++i) v(i) = nd(g);
   return v;
 }
-double rel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).norm() / std::max(1.0, b.norm()); }
 HillModel::Gain paper_K() {
   HillModel::Gain K;
   K << -2.2541, -0.0071, -0.0072, -22.3975, 2.3256, 1.9369, -0.0104, -2.2493, -0.0055, 2.3259, -23.7456, 1.4544,
       -0.0072, -0.0055, -2.2471, 1.9357, 1.4552, -24.2818;
   return K;
-}
-Mat6 paper_Q() {
-  Vec6 b;
-  b << 0.05, 0.05, 0.05, 0.001, 0.001, 0.001;
-  return (b.array() * b.array()).matrix().asDiagonal();
 }
 }  // namespace
 

@@ -113,7 +113,7 @@ GeneralisedPlant normalised_plant(const MatrixXd& A, const MatrixXd& B1a, const 
 
 // Force disturbance, position measured with noise, z = [position; u]
 // (tests/data/controllers/double-integrator.yaml).
-GeneralisedPlant double_integrator() {
+GeneralisedPlant force_double_integrator() {
   MatrixXd A(2, 2), B1a(2, 1), B2(2, 1), C1a(1, 2), C2(1, 2);
   A << 0, 1, 0, 0;
   B1a << 0, 1;
@@ -133,7 +133,7 @@ void expect_certified(const GeneralisedPlant& P, const hinf::synth::ControllerSy
 }
 
 TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
-  const GeneralisedPlant P = double_integrator();
+  const GeneralisedPlant P = force_double_integrator();
   const double reference = dgkf_gamma(P);
   for (bool strictly_proper : {true, false}) {
     const auto r = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {strictly_proper, std::nullopt, std::nullopt});
@@ -146,7 +146,7 @@ TEST(ControllerSynthesis, DoubleIntegratorMatchesDgkf) {
 // the controller, inside |λ| < r; γ no better than the unconstrained optimum; and the
 // γ-optimal controller's ill-conditioning (a pole near −1e8 rad/s, cond(N) ~ 5e4) gone.
 TEST(ControllerSynthesis, PoleDiskConfinesTheClosedLoop) {
-  const GeneralisedPlant P = double_integrator();
+  const GeneralisedPlant P = force_double_integrator();
   const auto free = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, std::nullopt, std::nullopt});
   for (double r : {2.0, 5.0}) {
     const auto disk = hinf::synth::synthesize_controller(P, hinf::synth::Settings(), {true, r, std::nullopt});

@@ -35,7 +35,7 @@ using hinf::synth::Settings;
 using hinf::test::certain_plant;
 using hinf::test::triple_integrator_with_input;
 
-Plant scalar(double a, double b, double c, double d, double l) { return hinf::test::scalar_plant(a, b, c, d, l); }
+using hinf::test::scalar_plant;
 
 Settings filtered_settings() {
   Settings s;
@@ -45,7 +45,7 @@ Settings filtered_settings() {
 
 Plant double_integrator() { return hinf::test::double_integrator(0.1, 0.5); }
 
-Plant uncontrolled_hill(double delta_bar) {
+Plant uncontrolled_hill_plant(double delta_bar) {
   hinf::synth::HillPlantSpec s;
   s.orbital_rate = 7.2722e-5;
   s.chaser_mass = 1000;
@@ -127,7 +127,7 @@ TEST(FilteredEstimate, ScalarPlantsMatchADenseScanByLmiAndRiccati) {
                              {-0.7, 1, 1, 1, 1}, {0.3, 0.1, -1, 1, 1},  {1, 0.05, 1, 0.1, 1}};
   for (const auto& c : cases) {
     SCOPED_TRACE(testing::Message() << "a=" << c[0] << " b=" << c[1] << " c=" << c[2] << " d=" << c[3]);
-    const Plant P = scalar(c[0], c[1], c[2], c[3], c[4]);
+    const Plant P = scalar_plant(c[0], c[1], c[2], c[3], c[4]);
     const double scan = scalar_filtered_scan(c[0], c[1], c[2], c[3], c[4]);
     const double riccati = hinf::certify::optimal_hinf_predictor_gamma(P, 1e-10, Estimate::Filtered);
     const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, filtered_settings());
@@ -146,7 +146,7 @@ TEST(FilteredEstimate, ScalarPlantsMatchADenseScanByLmiAndRiccati) {
 TEST(FilteredEstimate, IntegratorsAndTheUncontrolledHillPlantMatchRiccati) {
   expect_filtered_lmi_equals_riccati(double_integrator(), "double integrator");
   expect_filtered_lmi_equals_riccati(triple_integrator_with_input(), "triple integrator with a known input");
-  expect_filtered_lmi_equals_riccati(uncontrolled_hill(0), "uncontrolled Hill plant");
+  expect_filtered_lmi_equals_riccati(uncontrolled_hill_plant(0), "uncontrolled Hill plant");
   expect_central_filter_achieves_its_level(double_integrator(), 2.0);
 }
 
@@ -238,7 +238,7 @@ TEST(FilteredEstimate, KalmanFilterBesideTheHinfFilteredEstimate) {
 // analysis LMI (50) solved by the barrier method equals check 4's bounded-real search, both
 // with the feedthrough −L M D v; the Kalman filter x̂(k|k) of the uncertain plant is certified at it.
 TEST(FilteredEstimate, UncertainPlantRobustBoundTwoWays) {
-  const Plant P = uncontrolled_hill(0.05);
+  const Plant P = uncontrolled_hill_plant(0.05);
   const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, filtered_settings());
   ASSERT_TRUE(res.certificate.passed);
   EXPECT_TRUE(res.certificate.robust_feasible_at_gamma);

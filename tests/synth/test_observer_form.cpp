@@ -35,7 +35,7 @@ using hinf::test::certain_plant;
 using hinf::test::double_integrator;
 using hinf::test::triple_integrator_with_input;
 
-Plant scalar(double a, double b, double c, double d, double l) { return hinf::test::scalar_plant(a, b, c, d, l); }
+using hinf::test::scalar_plant;
 
 // docs/maths.md (127): γ(κ) for the gain κ = k c of a scalar plant.
 double scalar_gamma(double a, double b, double c, double d, double l, double kappa) {
@@ -83,7 +83,7 @@ TEST(ObserverForm, ScalarPlantsMatchTheClosedFormByLmiAndRiccati) {
                              {1, 0.05, 1, 0.1, 1}};
   for (const auto& k : cases) {
     SCOPED_TRACE(testing::Message() << "a=" << k[0] << " b=" << k[1] << " c=" << k[2] << " d=" << k[3]);
-    const Plant P = scalar(k[0], k[1], k[2], k[3], k[4]);
+    const Plant P = scalar_plant(k[0], k[1], k[2], k[3], k[4]);
     const double closed = scalar_optimum(k[0], k[1], k[2], k[3], k[4]);
     const double riccati = hinf::certify::optimal_hinf_predictor_gamma(P, 1e-10);
     const hinf::synth::SynthesisResult res = hinf::synth::synthesize(P, observer_settings());
@@ -219,7 +219,7 @@ TEST(ObserverForm, AugmentedFormOnAnIntegratorSaysWhyAndPointsToTheObserverForm)
 }
 
 TEST(ObserverForm, StablePlantsStillGetTheAugmentedFilterByDefault) {
-  const Plant P = scalar(0.5, 1, 1, 0.2, 2);
+  const Plant P = scalar_plant(0.5, 1, 1, 0.2, 2);
   EXPECT_EQ(hinf::synth::synthesize(P, Settings{}).filter.form, FilterForm::Augmented);
   // and both forms reach the same nominal optimum (the central filter is an observer)
   EXPECT_NEAR(hinf::synth::synthesize(P, Settings{}).gamma / hinf::synth::synthesize(P, observer_settings()).gamma,
@@ -273,7 +273,7 @@ TEST(H2Norm, FirstOrderClosedForm) {
 // worst-case gain: each beats the other in its own norm, never in the other's. Scalar
 // plants: the Kalman H2 equals a dense scan of (132) over the gain.
 TEST(Kalman, EachFilterWinsInItsOwnNorm) {
-  for (const Plant& P : {scalar(1, 1, 1, 1, 1), scalar(1.2, 0.3, 2, 0.5, 1), double_integrator(0.1, 0.5),
+  for (const Plant& P : {scalar_plant(1, 1, 1, 1, 1), scalar_plant(1.2, 0.3, 2, 0.5, 1), double_integrator(0.1, 0.5),
                          triple_integrator_with_input()}) {
     const hinf::synth::SynthesisResult kf = hinf::synth::kalman_predictor(P, Settings{});
     const hinf::synth::SynthesisResult hi = hinf::synth::synthesize(P, Settings{});
