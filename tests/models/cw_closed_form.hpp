@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-namespace hinf_test {
+namespace hinf::test {
 
 inline Eigen::Matrix<double, 6, 1> cw_closed_form(const Eigen::Matrix<double, 6, 1>& s0, double n, double t) {
   const double c = std::cos(n * t), sn = std::sin(n * t);
@@ -21,4 +21,4 @@ inline Eigen::Matrix<double, 6, 1> cw_closed_form(const Eigen::Matrix<double, 6,
   return s;
 }
 
-}  // namespace hinf_test
+}  // namespace hinf::test

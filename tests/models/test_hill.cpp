@@ -13,7 +13,7 @@ using hinf::models::Discretisation;
 using hinf::models::HillModel;
 using HillState = HillModel::State;
 using Input = HillModel::Input;
-using hinf_test::cw_closed_form;
+using hinf::test::cw_closed_form;
 
 namespace {
 

@@ -10,7 +10,7 @@
 namespace {
 
 using hinf::models::RelativeTwoBody;
-using hinf_test::cw_closed_form;
+using hinf::test::cw_closed_form;
 using Vector3 = RelativeTwoBody::Vector3;
 using Vector6 = RelativeTwoBody::Vector6;
 

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 
-namespace hinf_test {
+namespace hinf::test {
 
 // ||a - b|| / max(1, ||b||) in the Frobenius norm.
 inline double rel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
@@ -19,4 +19,4 @@ inline Eigen::Matrix<double, 6, 6> paper_Q() {
   return (b.array() * b.array()).matrix().asDiagonal();
 }
 
-}  // namespace hinf_test
+}  // namespace hinf::test

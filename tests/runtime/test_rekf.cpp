@@ -12,8 +12,8 @@
 #include "kalman_test_values.hpp"
 
 using namespace hinf::runtime;
-using hinf_test::paper_Q;
-using hinf_test::rel;
+using hinf::test::paper_Q;
+using hinf::test::rel;
 using hinf::models::CartesianPosition;
 using hinf::models::HillModel;
 
