@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
+#include "hinf/certify/controller_certificate.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/runtime_yaml/controller_file.hpp"
 #include "hinf/synth/controller_config.hpp"
@@ -108,7 +109,7 @@ int analyze_controller_file(const std::string& config_path, const std::string& c
   const ConfigAndController in = load(config_path, controller_path);
   // the certificate at the claimed γ (or at infinity: analysis only)
   const double gamma = in.file.gamma.value_or(INFINITY);
-  const synth::ControllerCertificate c = synth::certify_controller(in.config.plant, in.controller, gamma, in.config.design);
+  const synth::ControllerCertificate c = certify::certify_controller(in.config.plant, in.controller, gamma, in.config.design.checks());
   if (json) {
     using Json = nlohmann::ordered_json;
     const auto number = [](double v) { return std::isfinite(v) ? Json(std::strtod(num(v).c_str(), nullptr)) : Json(nullptr); };

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "hinf/certify/balance.hpp"
+#include "hinf/certify/controller_certificate.hpp"
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/common/error.hpp"
 
@@ -15,17 +16,6 @@ namespace {
 constexpr double kControllerEquallyOptimalTolerance = 1e-6;
 // Relative accuracy of the controllers' H∞ norms.
 constexpr double kGoldenNormTolerance = 1e-9;
-
-void require_fits(const hinf::GeneralisedPlant& P, const hinf::Controller& K) {
-  const Eigen::Index nk = K.A_K.rows();
-  if (K.A_K.cols() != nk || K.B_K.rows() != nk || K.C_K.cols() != nk || K.B_K.cols() != P.ny() ||
-      K.C_K.rows() != P.nu() || K.D_K.rows() != P.nu() || K.D_K.cols() != P.ny())
-    throw Error(ErrorCode::InvalidInput,
-                "the controller (B_K " + std::to_string(K.B_K.rows()) + "x" + std::to_string(K.B_K.cols()) + ", C_K " +
-                    std::to_string(K.C_K.rows()) + "x" + std::to_string(K.C_K.cols()) +
-                    ") does not fit the config's plant (ny = " + std::to_string(P.ny()) +
-                    " measurements, nu = " + std::to_string(P.nu()) + " controls)");
-}
 
 hinf::StateSpace as_system(const hinf::Controller& K) { return {K.A_K, K.B_K, K.C_K, K.D_K}; }
 
@@ -60,9 +50,9 @@ double relative_difference(const hinf::Controller& a, const hinf::Controller& b,
 
 ControllerVerification verify_controller(const ControllerConfig& config, const hinf::Controller& K,
                                          double claimed_gamma) {
-  require_fits(config.plant, K);
+  certify::require_controller_fits(config.plant, K);
   ControllerVerification v;
-  v.certificate = certify_controller(config.plant, K, claimed_gamma, config.design);
+  v.certificate = certify::certify_controller(config.plant, K, claimed_gamma, config.design.checks());
   v.holds = v.certificate.passed;
   return v;
 }
@@ -70,7 +60,7 @@ ControllerVerification verify_controller(const ControllerConfig& config, const h
 ControllerGoldenComparison compare_controller_with_golden(const ControllerConfig& config, const hinf::Controller& golden,
                                                           double golden_gamma, const ControllerSynthesisResult& now,
                                                           double rtol) {
-  require_fits(config.plant, golden);
+  certify::require_controller_fits(config.plant, golden);
   const bool discrete = config.plant.time == hinf::TimeDomain::Discrete;
   ControllerGoldenComparison c;
   c.gamma_relative_change = std::abs(now.gamma - golden_gamma) / std::abs(golden_gamma);
@@ -80,7 +70,7 @@ ControllerGoldenComparison compare_controller_with_golden(const ControllerConfig
   c.same_controller = c.controller_difference && *c.controller_difference <= rtol;
   if (!c.same_controller) {  // not unique at the optimum: is the golden one still certified?
     const double tol = std::min(rtol, kControllerEquallyOptimalTolerance);
-    c.golden_recertified = certify_controller(config.plant, golden, golden_gamma * (1 + tol), config.design);
+    c.golden_recertified = certify::certify_controller(config.plant, golden, golden_gamma * (1 + tol), config.design.checks());
     c.same_controller = c.golden_recertified->passed;
   }
   return c;

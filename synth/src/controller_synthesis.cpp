@@ -1,4 +1,4 @@
-// synthesize_controller, certify_controller (controller_synthesis.hpp).
+// synthesize_controller, controller_sdpa (controller_synthesis.hpp).
 #include "hinf/synth/controller_synthesis.hpp"
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 
 #include "controller_lmi.hpp"
 #include "controller_scaling.hpp"
-#include "hinf/certify/balance.hpp"
-#include "hinf/certify/hinf_norm.hpp"
+#include "hinf/certify/controller_certificate.hpp"
+#include "hinf/certify/pbh.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/lmi/sdpa_format.hpp"
 #include "hinf/sdp/dual_bound.hpp"
@@ -24,16 +24,13 @@ namespace {
 // When the γ-optimal point does not give a controller (I − R S numerically singular, or a
 // certificate lost to round-off), the back-offs (149a) tried in turn (the γ written says which).
 constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3, 1e-2, 5e-2};
-// The back-off's margin is maximised to this relative gap (as the filters', docs/maths.md §6).
-constexpr double kControllerBackoffRelativeGap = 1e-3;
 // The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
 // 1e3, then golden sections within a decade of the best.
 constexpr double kLogDLow = -6, kLogDHigh = 3;
 constexpr int kGoldenSteps = 8;
-// The closed-loop norm may exceed the solver's γ by this much (the recovery's round-off).
-constexpr double kNormSlack = 1e-6;
-// Relative accuracy of the closed-loop norm.
-constexpr double kClosedLoopNormTolerance = 1e-10;
+// The least ‖T_qp‖∞ of the robust design (160a) is first found to this relative gap only:
+// without noise in y that problem is singular, its infimum approached at the end of the path.
+constexpr double kLeastChannelNormRelativeGap = 1e-3;
 
 void check_dimensions(const hinf::GeneralisedPlant& P) {
   const int n = P.n();
@@ -57,52 +54,6 @@ void check_dimensions(const hinf::GeneralisedPlant& P) {
     throw Error(ErrorCode::InvalidInput, "controller.sample_time: must be positive in discrete time", "sample_time");
 }
 
-// ‖T_qp‖∞ of the closed loop (147) `cl` of P: p enters the plant's state by H, q = E x
-// (docs/maths.md (160)); the controller's states are neither perturbed nor read.
-double robust_channel_norm(const hinf::GeneralisedPlant& P, const hinf::StateSpace& cl,
-                           const hinf::UncertaintyChannel& channel) {
-  const Eigen::Index n = P.n(), ncl = cl.A.rows();
-  if (channel.H.rows() != n || channel.E.cols() != n)
-    throw Error(ErrorCode::InvalidInput, "controller.robust: H must have " + std::to_string(n) + " rows and E " +
-                                             std::to_string(n) + " columns (the plant's states), got H " +
-                                             std::to_string(channel.H.rows()) + "x" + std::to_string(channel.H.cols()) +
-                                             " and E " + std::to_string(channel.E.rows()) + "x" +
-                                             std::to_string(channel.E.cols()), "robust");
-  hinf::StateSpace t;
-  t.A = cl.A;
-  t.B = Eigen::MatrixXd::Zero(ncl, channel.H.cols());
-  t.B.topRows(n) = channel.H;
-  t.C = Eigen::MatrixXd::Zero(channel.E.rows(), ncl);
-  t.C.leftCols(n) = channel.E;
-  t.D = Eigen::MatrixXd::Zero(channel.E.rows(), channel.H.cols());
-  return (P.time == hinf::TimeDomain::Discrete ? certify::discrete_hinf_norm(t, kClosedLoopNormTolerance)
-                                                : certify::continuous_hinf_norm(t, kClosedLoopNormTolerance))
-      .norm;
-}
-
-// A mode of A counts as unreached (unseen) when the PBH matrix [A − λI, X] ([A − λI; X]) has a
-// singular value this small relative to its scale (docs/maths.md (126)).
-constexpr double kControllerPbhRelativeTolerance = 1e-10;
-
-// The first eigenvalue λ of A outside the stability region (Re λ ≥ 0, or |λ| ≥ 1 in discrete
-// time) at which [A − λI; X] loses rank, if any: an unstable mode X does not see.
-std::optional<std::complex<double>> unseen_unstable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X,
-                                                         bool discrete) {
-  const Eigen::Index n = A.rows();
-  Eigen::ComplexEigenSolver<Eigen::MatrixXd> es(A, false);
-  Eigen::MatrixXd AX(n + X.rows(), n);
-  AX << A, X;
-  const double scale = std::max(1.0, AX.norm());
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const std::complex<double> lambda = es.eigenvalues()(i);
-    if (discrete ? std::abs(lambda) < 1 : lambda.real() < 0) continue;
-    Eigen::MatrixXcd pbh(n + X.rows(), n);
-    pbh << A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n), X.cast<std::complex<double>>();
-    if (Eigen::JacobiSVD<Eigen::MatrixXcd>(pbh).singularValues()(n - 1) <= kControllerPbhRelativeTolerance * scale) return lambda;
-  }
-  return std::nullopt;
-}
-
 // No controller stabilises the loop unless (A, B2) is stabilisable and (A, C2) detectable
 // (checked on the equilibrated plant): Error(Infeasible) naming the mode.
 void require_stabilisable_detectable(const hinf::GeneralisedPlant& P) {
@@ -111,19 +62,17 @@ void require_stabilisable_detectable(const hinf::GeneralisedPlant& P) {
   const auto text = [](std::complex<double> z) {
     return fmt(z.real()) + (z.imag() == 0 ? "" : (z.imag() > 0 ? " + " : " - ") + fmt(std::abs(z.imag())) + "i");
   };
-  if (const auto l = unseen_unstable_mode(P.A.transpose(), P.B2.transpose(), discrete))
-    throw Error(ErrorCode::Infeasible, "infeasible: (A, B2) is not stabilisable: the mode λ = " + text(*l) + " of A (" +
+  if (const auto m = certify::unseen_unstable_mode(P.A.transpose(), P.B2.transpose(), discrete))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, B2) is not stabilisable: the mode λ = " + text(m->lambda) + " of A (" +
                                            region + ") is not reached by the control u, so no controller makes the "
                                            "closed loop stable (PBH test, docs/maths.md (126))");
-  if (const auto l = unseen_unstable_mode(P.A, P.C2, discrete))
-    throw Error(ErrorCode::Infeasible, "infeasible: (A, C2) is not detectable: the mode λ = " + text(*l) + " of A (" +
+  if (const auto m = certify::unseen_unstable_mode(P.A, P.C2, discrete))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, C2) is not detectable: the mode λ = " + text(m->lambda) + " of A (" +
                                            region + ") is not seen in the measurement y, so no controller makes the "
                                            "closed loop stable (PBH test, docs/maths.md (126))");
 }
 
-}  // namespace
 
-namespace {
 
 // The equilibrated plant, the disk in its time unit, and the LMI on them.
 struct ScaledControllerLmi {
@@ -172,36 +121,7 @@ sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, c
   return sol;
 }
 
-}  // namespace
 
-ControllerCertificate certify_controller(const hinf::GeneralisedPlant& P, const hinf::Controller& K, double gamma,
-                                         const ControllerDesign& design) {
-  ControllerCertificate c;
-  const hinf::StateSpace cl = hinf::closed_loop(P, K);
-  const Eigen::VectorXcd poles = certify::balanced_eigenvalues(cl.A);
-  c.closed_loop_poles.assign(poles.data(), poles.data() + poles.size());
-  const bool discrete = P.time == hinf::TimeDomain::Discrete;
-  c.stability_margin_value = discrete ? poles.cwiseAbs().maxCoeff() : poles.real().maxCoeff();
-  c.stable = discrete ? c.stability_margin_value < 1 : c.stability_margin_value < 0;
-  c.max_pole_modulus = poles.cwiseAbs().maxCoeff();
-  c.poles_in_disk = !design.pole_disk_radius || c.max_pole_modulus < *design.pole_disk_radius;
-  if (!c.stable) {
-    c.closed_loop_hinf_norm = INFINITY;
-    return c;
-  }
-  const certify::HinfNorm h =
-      discrete ? certify::discrete_hinf_norm(cl, kClosedLoopNormTolerance) : certify::continuous_hinf_norm(cl, kClosedLoopNormTolerance);
-  c.closed_loop_hinf_norm = h.norm;
-  c.peak_frequency = h.peak_frequency;
-  if (design.robust) {
-    c.robust_channel_norm = robust_channel_norm(P, cl, *design.robust);
-    c.robustly_stable = *c.robust_channel_norm < 1;
-  }
-  c.passed = c.poles_in_disk && c.robustly_stable && c.closed_loop_hinf_norm <= gamma * (1 + kNormSlack);
-  return c;
-}
-
-namespace {
 
 // What one synthesis shares between its solves.
 struct SynthesisContext {
@@ -237,7 +157,7 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
     if (b > 0) {
       const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
       sdp::Options options = solver_options(x.settings);  // the margin need only be near its maximum
-      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kControllerBackoffRelativeGap);
+      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kBackoffRelativeGap);
       const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
                                                     staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
@@ -261,7 +181,7 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
       continue;
     }
     r.gamma = pt.gamma * sc.gamma_factor();
-    r.certificate = certify_controller(x.P, r.controller, r.gamma, x.design);
+    r.certificate = certify::certify_controller(x.P, r.controller, r.gamma, x.design.checks());
     r.certificate.cond_N = cond_N;
     r.certificate.lmi_max_eigenvalue =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
@@ -281,10 +201,8 @@ void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
   ControllerDesign free = x.S.design;
   free.pole_disk_radius.reset();
   const ControllerLmi Q = build_controller_lmi(robust_channel_plant(x.S.plant, channel), free);
-  // to 1e-3 only: without noise in y this problem is singular, its infimum approached at the
-  // end of the path
   const sdp::Solution sq = minimize_gamma(Q, x.settings, x.observer, "the robust channel's LMI (docs/maths.md (160a))",
-                                          kControllerBackoffRelativeGap);
+                                          kLeastChannelNormRelativeGap);
   r.newton_iterations += sq.newton_total;
   r.time_s += sq.elapsed_s;
   r.least_robust_channel_norm = Q.lmi.value(Q.g, sq.x)(0, 0);
@@ -405,7 +323,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
     robust_design(x, r);
   }
   // What is certified is the closed loop's norm (its certified upper value): γ is never
-  // written below it, even within the recovery's slack kNormSlack.
+  // written below it, even within the recovery's slack certify::kClosedLoopNormSlack.
   if (r.certificate.passed) r.gamma = std::max(r.gamma, r.certificate.closed_loop_hinf_norm);
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,

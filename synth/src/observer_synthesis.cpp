@@ -3,8 +3,10 @@
 // back-off, recovery (125), (144) and the certificate of §7 on the error dynamics (122)–(123), (141).
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <sstream>
 
+#include "hinf/certify/pbh.hpp"
 #include "hinf/certify/stability.hpp"
 #include "observer_lmi.hpp"
 #include "pipeline.hpp"
@@ -15,10 +17,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
-
-// A mode counts as undetectable when the PBH matrix [A − λI; C] has a singular value this
-// small relative to ‖[A; C]‖ (docs/maths.md (126)).
-constexpr double kPbhRelativeTolerance = 1e-10;
 
 std::string complex_text(std::complex<double> z) {
   if (z.imag() == 0) return fmt(z.real());
@@ -36,36 +34,24 @@ std::string vector_text(const Eigen::VectorXcd& v) {
 // scaled plant; v and its residuals are reported in the user's state coordinates
 // (x = diag(state_scale) x̃, docs/maths.md §4.4).
 void require_detectable(const Plant& plant, const VectorXd& state_scale) {
-  const int n = plant.n(), m = plant.m();
-  Eigen::ComplexEigenSolver<MatrixXd> es(plant.A, false);
-  MatrixXd AC(n + m, n);
-  AC << plant.A, plant.C;
-  const double scale = std::max(1.0, AC.norm());
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const std::complex<double> lambda = es.eigenvalues()(i);
-    if (std::abs(lambda) < 1.0) continue;
-    Eigen::MatrixXcd pbh(n + m, n);
-    pbh << plant.A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n),
-        plant.C.cast<std::complex<double>>();
-    const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(pbh, Eigen::ComputeFullV);
-    const double sigma_min = svd.singularValues()(n - 1);
-    if (sigma_min > kPbhRelativeTolerance * scale) continue;
-    Eigen::VectorXcd v = state_scale.cast<std::complex<double>>().asDiagonal() * svd.matrixV().col(n - 1);
-    v.normalize();
-    Eigen::Index big = 0;
-    v.cwiseAbs().maxCoeff(&big);
-    v *= std::abs(v(big)) / v(big);
-    const Eigen::VectorXcd v_scaled = state_scale.cwiseInverse().cast<std::complex<double>>().asDiagonal() * v;
-    const Eigen::VectorXcd Av = (plant.A.cast<std::complex<double>>() * v_scaled - lambda * v_scaled);
-    const Eigen::VectorXcd Cv = plant.C.cast<std::complex<double>>() * v_scaled;
-    throw Error(ErrorCode::Infeasible,
-                "infeasible: the mode λ = " + complex_text(lambda) + " of A (|λ| = " + fmt(std::abs(lambda)) +
-                    " ≥ 1) is not detectable from y: for the direction v = " + vector_text(v) +
-                    " (in the plant's state coordinates), residuals ‖(A − λI)v‖ = " + fmt(Av.norm()) +
-                    " and ‖C v‖ = " + fmt(Cv.norm()) + " in the scaled units of docs/maths.md §4.4" +
-                    ", so e = x − x̂ keeps this mode for every gain K and no filter makes the error stable "
-                    "(docs/maths.md (126)); measure this mode, or leave it out of the model");
-  }
+  const std::optional<certify::UnseenMode> mode = certify::unseen_unstable_mode(plant.A, plant.C, /*discrete=*/true);
+  if (!mode) return;
+  const std::complex<double> lambda = mode->lambda;
+  Eigen::VectorXcd v = state_scale.cast<std::complex<double>>().asDiagonal() * mode->direction;
+  v.normalize();
+  Eigen::Index big = 0;
+  v.cwiseAbs().maxCoeff(&big);
+  v *= std::abs(v(big)) / v(big);
+  const Eigen::VectorXcd v_scaled = state_scale.cwiseInverse().cast<std::complex<double>>().asDiagonal() * v;
+  const Eigen::VectorXcd Av = (plant.A.cast<std::complex<double>>() * v_scaled - lambda * v_scaled);
+  const Eigen::VectorXcd Cv = plant.C.cast<std::complex<double>>() * v_scaled;
+  throw Error(ErrorCode::Infeasible,
+              "infeasible: the mode λ = " + complex_text(lambda) + " of A (|λ| = " + fmt(std::abs(lambda)) +
+                  " ≥ 1) is not detectable from y: for the direction v = " + vector_text(v) +
+                  " (in the plant's state coordinates), residuals ‖(A − λI)v‖ = " + fmt(Av.norm()) +
+                  " and ‖C v‖ = " + fmt(Cv.norm()) + " in the scaled units of docs/maths.md §4.4" +
+                  ", so e = x − x̂ keeps this mode for every gain K and no filter makes the error stable "
+                  "(docs/maths.md (126)); measure this mode, or leave it out of the model");
 }
 
 void preflight_observer(const Plant& plant, const VectorXd& state_scale, Estimate estimate) {

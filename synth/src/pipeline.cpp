@@ -139,10 +139,6 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
 
 // The γ back-off (docs/maths.md §6): at γ_b² = (1 + b)²·γ*², the point of largest LMI
 // margin, which keeps S and R − S away from singular and the recovered gains moderate.
-// The margin only has to be near its maximum (a well-centred point, not a digit count):
-// relative accuracy 1e-3. At the solver's 1e-7 a margin of ~1e-6 would ask for an
-// absolute gap of 1e-13, below round-off.
-constexpr double kBackoffRelativeGap = 1e-3;
 
 sdp::Solution solve_backoff(const lmi::LmiProblem& lmi, lmi::VarId margin, double gamma2_backoff, const Settings& settings,
                             const IterationObserver& observer) {

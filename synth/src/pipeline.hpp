@@ -17,6 +17,12 @@ namespace hinf::synth {
 // A number in messages: 10 significant digits.
 std::string fmt(double v);
 
+// The relative gap to which a γ back-off (docs/maths.md §6, the filters' and the
+// controller's (149a)) maximises its LMI margin: the margin only has to be near its maximum
+// (a well-centred point, not a digit count). At the solver's 1e-7 a margin of ~1e-6 would
+// ask for an absolute gap of 1e-13, below round-off.
+inline constexpr double kBackoffRelativeGap = 1e-3;
+
 // The solver's own options from the user's settings (as Ceres builds Minimizer::Options).
 sdp::Options solver_options(const Settings& settings);
 

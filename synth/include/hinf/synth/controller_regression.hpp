@@ -1,7 +1,7 @@
 // The policies of `hinf-synth verify` and `check` for controllers (docs/maths.md §26): a
 // claimed controller against its config, and a new synthesis against a golden controller
 // file. Everything is recomputed from the controller and the config's plant
-// (synth::certify_controller); the application only prints.
+// (certify::certify_controller); the application only prints.
 #pragma once
 #include <optional>
 #include <string>

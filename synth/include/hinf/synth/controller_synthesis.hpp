@@ -3,11 +3,11 @@
 // method as the filters, the controller recovered by (151), and an independent
 // certificate computed from the controller alone.
 #pragma once
-#include <complex>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "hinf/certify/controller_certificate.hpp"
 #include "hinf/models/controller.hpp"
 #include "hinf/models/generalised_plant.hpp"
 #include "hinf/synth/settings.hpp"
@@ -25,32 +25,13 @@ struct ControllerDesign {
   // Unstructured uncertainty ΔA = H F E, ‖F‖ ≤ 1 (docs/maths.md (160)): the certificate adds
   // the small-gain test ‖T_qp‖∞ < 1 of the closed loop from p (entering by H) to q = E x.
   std::optional<hinf::UncertaintyChannel> robust;
+  // What the certificate checks beside γ: the disk and the robust channel.
+  certify::ControllerChecks checks() const { return {pole_disk_radius, robust}; }
 };
 
-struct ControllerCertificate {
-  // Closed loop (147) from the recovered controller: Hurwitz (continuous) or Schur
-  // (discrete), and its spectral abscissa (max Re λ) or spectral radius.
-  bool stable = false;
-  double stability_margin_value = 0;
-  std::vector<std::complex<double>> closed_loop_poles;
-  // ‖T_zw‖∞ of the closed loop, certified upper value (symplectic pencil; continuous time
-  // through the bilinear map (152)), and where it peaks (rad/s or rad/sample).
-  double closed_loop_hinf_norm = 0;
-  double peak_frequency = 0;
-  // The synthesis LMI at the solver's point: its largest eigenvalue (< 0 strictly).
-  double lmi_max_eigenvalue = 0;
-  // cond(N), N Mᵀ = I − R S (the recovery's conditioning, (151)).
-  double cond_N = 0;
-  // The largest pole modulus, and whether every pole is inside the disk asked for (true
-  // when none was).
-  double max_pole_modulus = 0;
-  bool poles_in_disk = true;
-  // ‖T_qp‖∞ (certified upper value) when a robust channel was given; robust stability by
-  // small gain when < 1.
-  std::optional<double> robust_channel_norm;
-  bool robustly_stable = true;  // true when no channel was given
-  bool passed = false;  // stable, in the disk, norm ≤ γ(1 + kNormSlack), LMI strictly negative, robustly stable
-};
+// The controller's certificate is certify's (hinf/certify/controller_certificate.hpp):
+// computed from the plant and the controller alone, never from the solver.
+using certify::ControllerCertificate;
 
 struct ControllerSynthesisResult {
   hinf::Controller controller;
@@ -91,9 +72,5 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& pl
 // format; the comment says which variable is γ̃ and the factor s_z/s_w with γ = γ̃ s_z/s_w.
 std::string controller_sdpa(const hinf::GeneralisedPlant& plant, const ControllerDesign& design,
                             const std::string& comment);
-
-// The certificate of a given controller at level γ (used by synthesize_controller).
-ControllerCertificate certify_controller(const hinf::GeneralisedPlant& plant, const hinf::Controller& K, double gamma,
-                                         const ControllerDesign& design);
 
 }  // namespace hinf::synth
