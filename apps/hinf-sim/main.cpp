@@ -90,7 +90,7 @@ hinf::sim::RunSetup load_setup(const Options& o, hinf::sim::SummaryContext& cont
     if (!src) continue;
     ObtainedGains g;
     try {
-      g = obtain_gains(*src, o.verbose);
+      g = obtain_gains(*src, hinf::sim_cli::status_log(o.verbose));
     } catch (const hinf::Error& e) {  // name a synthesis as such; a gains file names itself
       if (src->synthesize_path.empty()) throw;
       throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());
@@ -253,6 +253,11 @@ int run_stages(const std::function<void()>& load, const std::function<void()>& s
     return fail(std::string("plots: ") + e.what(), hinf::ErrorCode::InvalidInput);
   }
   return 0;
+}
+
+hinf::sim::StatusLog status_log(bool enabled) {
+  if (!enabled) return nullptr;
+  return [](const std::string& line) { std::cerr << "hinf-sim: " << line << "\n"; };
 }
 
 std::function<void(long, long)> progress_bar(bool enabled) {

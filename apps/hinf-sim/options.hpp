@@ -10,6 +10,7 @@
 
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/sim/monte_carlo.hpp"
+#include "hinf/sim/status_log.hpp"
 
 namespace hinf::sim_cli {
 
@@ -35,6 +36,9 @@ double checked_duration(double duration, double sample_time);
 // exit 2). 0 when all three complete.
 int run_stages(const std::function<void()>& load, const std::function<void()>& simulate,
                const std::function<void()>& write);
+
+// The library's status lines on stderr ("hinf-sim: synthesising from PATH ..."), or nothing.
+hinf::sim::StatusLog status_log(bool enabled);
 
 // Monte-Carlo progress on stderr (a bar), or nothing.
 std::function<void(long, long)> progress_bar(bool enabled);

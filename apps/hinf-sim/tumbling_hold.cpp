@@ -38,7 +38,7 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
   }
   ObtainedController c;
   try {
-    c = obtain_hold_controller(s.controller, s.control_sample_time, o.verbose);
+    c = obtain_hold_controller(s.controller, s.control_sample_time, status_log(o.verbose));
   } catch (const hinf::Error& e) {  // name a synthesis as such; a controller file names itself
     if (s.controller.synthesize_path.empty()) throw;
     throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());

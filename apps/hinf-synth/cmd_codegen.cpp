@@ -4,15 +4,11 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
-#include "hinf/common/error.hpp"
 #include "hinf/common/input_file.hpp"
-#include "hinf/common/yaml_reader.hpp"
-#include "hinf/models/controller.hpp"
-#include "hinf/runtime_yaml/controller_file.hpp"
-#include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/codegen/codegen.hpp"
 
 #ifndef HINF_VERSION
@@ -20,28 +16,6 @@
 #endif
 
 namespace hinf::cli {
-namespace {
-
-// True if the YAML text states `format: <format>` at its top level.
-bool declares_format(const std::string& text, const std::string& path, const std::string& format) {
-  const YamlReader reader(path);
-  const YAML::Node root = reader.load(text, "empty file; expected a gains or controller file");
-  return root.IsMap() && root["format"] && root["format"].IsScalar() && root["format"].Scalar() == format;
-}
-
-// A controller file, discretised by Tustin's rule when it is continuous and --tustin is given.
-runtime_yaml::ControllerFile controller_to_fly(const std::string& text, const std::string& path, double tustin) {
-  runtime_yaml::ControllerFile k = runtime_yaml::parse_controller_yaml(text, path);
-  if (tustin > 0) {
-    if (k.discrete) throw hinf::Error(hinf::ErrorCode::InvalidInput, "--tustin: " + path + " is already a discrete-time controller");
-    const hinf::Controller d = hinf::tustin({k.A_K, k.B_K, k.C_K, k.D_K}, tustin);
-    // the certified gamma is the continuous loop's, not the sampled one's: not carried over
-    k = {true, tustin, std::nullopt, k.tool, k.config_sha256, d.A_K, d.B_K, d.C_K, d.D_K};
-  }
-  return k;
-}
-
-}  // namespace
 
 void add_codegen(CLI::App& app, Action& action) {
   struct Args {
@@ -50,7 +24,7 @@ void add_codegen(CLI::App& app, Action& action) {
     std::string out;
     std::string real = "double";
     int vector_steps = 50;
-    double tustin = 0;  // s; a continuous-time controller discretised at this period
+    std::optional<double> tustin;  // s; a continuous-time controller discretised at this period
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -69,8 +43,7 @@ void add_codegen(CLI::App& app, Action& action) {
       ->capture_default_str();
   cmd->add_option("--tustin", args->tustin,
                   "Period (s) at which a continuous-time controller file is discretised by Tustin's rule "
-                  "(docs/maths.md (161))")
-      ->check(CLI::PositiveNumber);
+                  "(docs/maths.md (161))");
   cmd->callback([args, &action] {
     action = [args]() -> int {
       hinf::codegen::CodegenOptions options;
@@ -79,12 +52,10 @@ void add_codegen(CLI::App& app, Action& action) {
                                            : hinf::codegen::CodegenOptions::Real::Double;
       options.generator = "hinf-synth " HINF_VERSION;
       options.vector_steps = args->vector_steps;
+      options.tustin_period = args->tustin;
       hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
       const std::string text = hinf::read_input_file(args->gains, "gains or controller file", hinf::kMaxGainsBytes);
-      const hinf::codegen::GeneratedFiles files =
-          declares_format(text, args->gains, "hinf-controller/1")
-              ? hinf::codegen::generate_controller_c(controller_to_fly(text, args->gains, args->tustin), options)
-              : hinf::codegen::generate_c(runtime_yaml::parse_gains_yaml(text, args->gains), options);
+      const hinf::codegen::GeneratedFiles files = hinf::codegen::generate_c_for_file(text, args->gains, options);
       hinf::codegen::write_generated_files(files, args->out, {args->gains});
       for (const auto& f : files.files)
         std::cout << "wrote " << (std::filesystem::path(args->out) / f.name).lexically_normal().string()

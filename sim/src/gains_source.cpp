@@ -8,8 +8,6 @@
 #include <hinf/common/error.hpp>
 #include <hinf/common/input_file.hpp>
 
-#include <iostream>
-
 namespace hinf::sim {
 namespace {
 // The scenarios feed the LTI filter y only; a filter that expects u would run without it.
@@ -21,7 +19,7 @@ void refuse_known_input(Eigen::Index r, const std::string& source) {
 }
 }  // namespace
 
-ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
+ObtainedGains obtain_gains(const LtiGainsSource& source, const StatusLog& log) {
   ObtainedGains out;
   if (!source.gains_path.empty()) {
     // read once: the bytes parsed are the bytes copied into the run directory
@@ -34,7 +32,7 @@ ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose) {
     return out;
   }
   auto config = hinf::synth::load_config(source.synthesize_path);
-  if (verbose) std::cerr << "hinf-sim: synthesising from " << source.synthesize_path << " ...\n";
+  if (log) log("synthesising from " + source.synthesize_path + " ...");
   const hinf::synth::SynthesisResult r = hinf::synth::synthesize(config.plant, config.settings);
   refuse_known_input(r.filter.G_F.cols(), source.synthesize_path);
   out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F, r.filter.D_F};

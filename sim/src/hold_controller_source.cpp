@@ -9,7 +9,6 @@
 #include <hinf/synth/controller_output.hpp>
 
 #include <cmath>
-#include <iostream>
 
 namespace hinf::sim {
 namespace {
@@ -32,7 +31,7 @@ hinf::Controller at_control_rate(const hinf::Controller& K, std::optional<double
 
 }  // namespace
 
-ObtainedController obtain_hold_controller(const ControllerSource& source, double T_c, bool verbose) {
+ObtainedController obtain_hold_controller(const ControllerSource& source, double T_c, const StatusLog& log) {
   ObtainedController out;
   if (!source.file_path.empty()) {
     out.controller_yaml = hinf::read_input_file(source.file_path, "controller file", hinf::kMaxGainsBytes);
@@ -43,7 +42,7 @@ ObtainedController obtain_hold_controller(const ControllerSource& source, double
   } else {
     const auto config = hinf::synth::parse_controller_config(hinf::synth::read_config_bytes(source.synthesize_path),
                                                              source.synthesize_path);
-    if (verbose) std::cerr << "hinf-sim: synthesising the controller from " << source.synthesize_path << " ...\n";
+    if (log) log("synthesising the controller from " + source.synthesize_path + " ...");
     const auto r = hinf::synth::synthesize_controller(config.plant, config.settings, config.design);
     const bool discrete = config.plant.time == hinf::TimeDomain::Discrete;
     const std::optional<double> period = discrete ? std::optional<double>(config.plant.sample_time) : std::nullopt;

@@ -56,6 +56,23 @@ TEST(CodegenCli, BadPrefixExits2AndWritesNothing) {
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
 }
 
+// --tustin is refused, naming it, unless it is a positive finite period for a continuous-time
+// controller file (issue 34: --tustin nan was silently ignored).
+TEST(CodegenCli, TustinPeriodThatCannotApplyExits2AndWritesNothing) {
+  TempDir dir;
+  const std::string gains = HINF_TEST_PAPER_GAINS;
+  for (const char* period : {"nan", "inf", "0", "-0.1"}) {
+    const auto r = codegen(gains + " --prefix nav --out " + (dir / "out") + " --tustin " + period);
+    EXPECT_EQ(r.exit_code, 2) << period << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("--tustin = ") + period + ": must be a positive, finite period"),
+              std::string::npos) << period << ": " << r.output;
+  }
+  const auto r = codegen(gains + " --prefix nav --out " + (dir / "out") + " --tustin 0.1");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is not a controller file"), std::string::npos) << r.output;
+  EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
+}
+
 TEST(CodegenCli, BadGainsFileExits2AndWritesNothing) {
   TempDir dir;
   hinf::test::write_text(dir / "bad.yaml",

@@ -7,6 +7,7 @@
 
 #include "hinf/sim/run.hpp"
 #include "hinf/sim/scenario.hpp"
+#include "hinf/sim/status_log.hpp"
 
 namespace hinf::sim {
 
@@ -20,6 +21,7 @@ struct ObtainedGains {
 
 // Errors propagate as hinf::Error with its own code: an invalid gains file or config is
 // InvalidInput (exit 2); a synthesis may also end Infeasible (3) or NumericalFailure (4).
-ObtainedGains obtain_gains(const LtiGainsSource& source, bool verbose);
+// `log` (may be empty) hears that a synthesis starts.
+ObtainedGains obtain_gains(const LtiGainsSource& source, const StatusLog& log);
 
 }  // namespace hinf::sim

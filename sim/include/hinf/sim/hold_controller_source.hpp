@@ -8,6 +8,7 @@
 
 #include "hinf/models/controller.hpp"
 #include "hinf/sim/hold_scenario.hpp"
+#include "hinf/sim/status_log.hpp"
 
 namespace hinf::sim {
 
@@ -20,7 +21,8 @@ struct ObtainedController {
 
 // hinf::Error: InvalidInput for a bad file or config, a controller that is not 3 in, 3 out,
 // or a discrete one of another period; a synthesis may also end Infeasible, CheckFailed or
-// NumericalFailure.
-ObtainedController obtain_hold_controller(const ControllerSource& source, double control_sample_time, bool verbose);
+// NumericalFailure. `log` (may be empty) hears that a synthesis starts.
+ObtainedController obtain_hold_controller(const ControllerSource& source, double control_sample_time,
+                                          const StatusLog& log);
 
 }  // namespace hinf::sim
