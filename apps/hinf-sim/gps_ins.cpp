@@ -62,10 +62,10 @@ void write_outputs(const Options& o, const GpsInsExperiment& e, const std::vecto
                    const Campaign& stats, const std::vector<Campaign>& table1) {
   std::vector<std::pair<std::string, std::string>> files{
       {"trajectory.csv", format_gps_ins_trajectory_csv(e, samples)},
-      {"runs.csv", format_gps_ins_runs_csv(e, stats, run_seeds(o))},
+      {"runs.csv", format_gps_ins_runs_csv(e, stats, run_seeds(o.seed, o.runs))},
       {"summary.json", format_gps_ins_summary_json(e, stats, o.scenario_path, o.seed)}};
   if (!e.table1_fractions.empty()) files.emplace_back("table1.csv", format_gps_ins_table1_csv(e, e.table1_fractions, table1));
-  write_run_directory(o, files, e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+  write_run_directory(o, files, {}, e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
     write_gps_ins_plots(o.out_dir, e, samples, title, outputs);
   });
 }

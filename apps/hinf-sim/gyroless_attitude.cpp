@@ -27,9 +27,9 @@ void write_outputs(const Options& o, const GyrolessExperiment& e,
                    const std::vector<std::vector<GyrolessSample>>& samples, const Campaign& stats) {
   write_run_directory(o,
                       {{"trajectory.csv", format_gyroless_trajectory_csv(e, samples)},
-                       {"runs.csv", format_gyroless_runs_csv(e, stats, run_seeds(o))},
+                       {"runs.csv", format_gyroless_runs_csv(e, stats, run_seeds(o.seed, o.runs))},
                        {"summary.json", format_gyroless_summary_json(e, stats, o.scenario_path, o.seed)}},
-                      e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+                      {}, e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
                         write_gyroless_plots(o.out_dir, e, samples, title, outputs);
                       });
 }

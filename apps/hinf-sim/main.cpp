@@ -19,6 +19,7 @@
 #include "hinf/sim/monte_carlo.hpp"
 #include "hinf/sim/plots.hpp"
 #include "hinf/sim/report.hpp"
+#include "hinf/sim/run_directory.hpp"
 #include "hinf/sim/hold_scenario_yaml.hpp"
 #include "hinf/sim/scenario_yaml.hpp"
 #include "hinf/common/input_file.hpp"
@@ -68,10 +69,7 @@ void add_options(CLI::App& app, Options& o) {
 // --duration: a whole number of sample times; the steady-state window shrinks with it.
 void override_duration(hinf::sim::Scenario& s, std::optional<double> duration) {
   if (!duration) return;
-  const std::string problem = hinf::sim::timing_problem(*duration, s.sample_time);
-  if (!problem.empty())
-    throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(*duration) + ": " + problem);
-  s.duration = *duration;
+  s.duration = hinf::sim::checked_duration(*duration, s.sample_time);
   if (s.steady_state_start && *s.steady_state_start > s.duration) s.steady_state_start.reset();
 }
 
@@ -110,24 +108,24 @@ hinf::sim::RunSetup load_setup(const Options& o, hinf::sim::SummaryContext& cont
   return setup;
 }
 
-// The run's files, written together (hinf/common/atomic_file.hpp). Throws hinf::Error or
-// PlotError.
+// The run's files, written together (hinf::sim::write_run_directory), never over the gains
+// files or synthesis configs the scenario names. Throws hinf::Error or PlotError.
 void write_outputs(const Options& o, const hinf::sim::RunSetup& setup, const std::vector<hinf::sim::RunResult>& results,
                    const hinf::sim::SummaryContext& context,
                    const std::vector<std::pair<std::string, std::string>>& gains_files) {
   using namespace hinf::sim;
-  namespace fs = std::filesystem;
-  hinf::sim_cli::create_output_directory(o.out_dir);
   const Trajectory& trajectory = *results.front().trajectory;
-  hinf::AtomicFileSet outputs;
-  outputs.protect(o.scenario_path);
-  outputs.add((fs::path(o.out_dir) / "trajectory.csv").string(), format_trajectory_csv(trajectory));
-  for (const auto& [file, content] : gains_files) outputs.add((fs::path(o.out_dir) / file).string(), content);
-  outputs.add((fs::path(o.out_dir) / "runs.csv").string(), format_runs_csv(results));
-  outputs.add((fs::path(o.out_dir) / "summary.json").string(), format_summary_json(setup.scenario, results, context));
-  if (!o.no_plots && setup.scenario.plots)
-    write_plots(o.out_dir, trajectory, fs::path(o.scenario_path).stem().string(), outputs);
-  outputs.commit();
+  std::vector<std::pair<std::string, std::string>> files{{"trajectory.csv", format_trajectory_csv(trajectory)}};
+  files.insert(files.end(), gains_files.begin(), gains_files.end());
+  files.push_back({"runs.csv", format_runs_csv(results)});
+  files.push_back({"summary.json", format_summary_json(setup.scenario, results, context)});
+  std::vector<std::string> inputs;
+  for (const auto& src : {setup.scenario.filters.hinf, setup.scenario.filters.published})
+    if (src) inputs.push_back(src->gains_path.empty() ? src->synthesize_path : src->gains_path);
+  hinf::sim_cli::write_run_directory(o, files, inputs, setup.scenario.plots,
+                                     [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+                                       write_plots(o.out_dir, trajectory, title, outputs);
+                                     });
 }
 
 int run(int argc, char** argv) {
@@ -193,38 +191,16 @@ int run(int argc, char** argv) {
 
 namespace hinf::sim_cli {
 
-void create_output_directory(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw hinf::Error(hinf::ErrorCode::InvalidInput, "cannot create the output directory '" + dir + "': " + ec.message());
-}
-
-std::vector<std::uint64_t> run_seeds(const Options& o) {
-  std::vector<std::uint64_t> seeds;
-  for (long i = 0; i < o.runs; ++i) seeds.push_back(hinf::sim::run_seed(o.seed, i));
-  return seeds;
-}
-
 void write_run_directory(const Options& o, const std::vector<std::pair<std::string, std::string>>& files,
-                         bool plots_enabled,
+                         const std::vector<std::string>& inputs, bool plots_enabled,
                          const std::function<void(const std::string& title, hinf::AtomicFileSet& outputs)>& plots) {
-  namespace fs = std::filesystem;
-  create_output_directory(o.out_dir);
-  hinf::AtomicFileSet outputs;
-  outputs.protect(o.scenario_path);
-  for (const auto& [name, content] : files) outputs.add((fs::path(o.out_dir) / name).string(), content);
-  if (!o.no_plots && plots_enabled) plots(fs::path(o.scenario_path).stem().string(), outputs);
-  outputs.commit();
-}
-
-double checked_duration(double duration, double sample_time) {
-  const double k = duration / sample_time;
-  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
-    throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(duration) +
-                                                         ": must be a whole multiple of sample_time " +
-                                                         hinf::number_text(sample_time));
-  return duration;
+  std::vector<std::string> read = inputs;
+  read.push_back(o.scenario_path);
+  const std::string title = std::filesystem::path(o.scenario_path).stem().string();
+  hinf::sim::write_run_directory(o.out_dir, files, read,
+                                 o.no_plots || !plots_enabled
+                                     ? std::function<void(hinf::AtomicFileSet&)>()
+                                     : [&](hinf::AtomicFileSet& outputs) { plots(title, outputs); });
 }
 
 int run_stages(const std::function<void()>& load, const std::function<void()>& simulate,

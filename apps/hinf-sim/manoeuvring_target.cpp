@@ -24,9 +24,9 @@ void write_outputs(const Options& o, const ManoeuvringExperiment& e,
                    const std::vector<std::vector<ManoeuvringSample>>& samples, const Campaign& stats) {
   write_run_directory(o,
                       {{"trajectory.csv", format_manoeuvring_trajectory_csv(e, samples)},
-                       {"runs.csv", format_manoeuvring_runs_csv(e, stats, run_seeds(o))},
+                       {"runs.csv", format_manoeuvring_runs_csv(e, stats, run_seeds(o.seed, o.runs))},
                        {"summary.json", format_manoeuvring_summary_json(e, stats, o.scenario_path, o.seed)}},
-                      e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+                      {}, e.plots, [&](const std::string& title, hinf::AtomicFileSet& outputs) {
                         write_manoeuvring_plots(o.out_dir, e, samples, title, outputs);
                       });
 }

@@ -10,6 +10,7 @@
 
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/sim/monte_carlo.hpp"
+#include "hinf/sim/run_directory.hpp"
 #include "hinf/sim/status_log.hpp"
 
 namespace hinf::sim_cli {
@@ -22,13 +23,6 @@ struct Options {
   std::optional<double> duration;
   bool no_plots = false, quiet = false, verbose = false;
 };
-
-// Creates the run directory (and its parents): Error(InvalidInput) naming it if it cannot.
-void create_output_directory(const std::string& dir);
-
-// --duration T for a scenario sampled at `sample_time`: T if it is a whole number (≥ 1) of
-// samples, else Error(InvalidInput) naming --duration.
-double checked_duration(double duration, double sample_time);
 
 // A scenario family's three stages, each error reported on stderr with its exit code: load
 // (hinf::Error: its code), simulate (std::invalid_argument — a runtime filter or controller
@@ -43,33 +37,21 @@ hinf::sim::StatusLog status_log(bool enabled);
 // Monte-Carlo progress on stderr (a bar), or nothing.
 std::function<void(long, long)> progress_bar(bool enabled);
 
-// The Monte-Carlo runs of a scenario family (`--runs`, `--jobs`, seeds run_seed(--seed, i)):
-// stats[i] = run_one(i, on_sample), where on_sample keeps filter f's samples of run 0 in
-// (*samples)[f] when `samples` is given (sized by the caller) and is empty otherwise.
+// The Monte-Carlo runs of a scenario family with --runs, --jobs, --seed and the progress bar
+// (hinf::sim::run_family_campaign).
 template <class Stats, class Sample, class RunOne>
 std::vector<std::vector<Stats>> run_family_campaign(const Options& o, std::vector<std::vector<Sample>>* samples,
                                                     const RunOne& run_one) {
-  std::vector<std::vector<Stats>> stats(static_cast<std::size_t>(o.runs));
-  sim::for_each_run(
-      o.runs, o.jobs,
-      [&](long i) {
-        std::function<void(int, const Sample&)> on_sample;
-        if (i == 0 && samples)
-          on_sample = [samples](int f, const Sample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
-        stats[static_cast<std::size_t>(i)] = run_one(sim::run_seed(o.seed, i), on_sample);
-      },
-      progress_bar(!o.quiet && o.runs > 1));
-  return stats;
+  return sim::run_family_campaign<Stats, Sample>(o.runs, o.jobs, o.seed, samples, run_one,
+                                         progress_bar(!o.quiet && o.runs > 1));
 }
 
-// The seeds of the runs, in order.
-std::vector<std::uint64_t> run_seeds(const Options& o);
-
-// A scenario family's run directory, all or nothing (the scenario file protected): each
-// (file name, content), then, unless --no-plots or `plots_enabled` is false, `plots(title,
-// outputs)` draws into temporaries of the same set (title: the scenario file's stem).
+// A scenario family's run directory in --out (hinf::sim::write_run_directory): `inputs`, the
+// files the scenario names, are protected with the scenario file itself; unless --no-plots or
+// `plots_enabled` is false, `plots(title, outputs)` draws into temporaries of the same set
+// (title: the scenario file's stem).
 void write_run_directory(const Options& o, const std::vector<std::pair<std::string, std::string>>& files,
-                         bool plots_enabled,
+                         const std::vector<std::string>& inputs, bool plots_enabled,
                          const std::function<void(const std::string& title, hinf::AtomicFileSet& outputs)>& plots);
 
 // A `scenario: tumbling_hold` run (docs/experiments.md "Seed 004"): its exit code.

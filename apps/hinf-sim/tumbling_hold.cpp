@@ -28,12 +28,7 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
   setup.scenario = parse_hold_scenario(text, o.scenario_path);
   HoldScenario& s = setup.scenario;
   if (o.duration) {
-    const double k = *o.duration / s.control_sample_time;
-    if (std::abs(k - std::round(k)) > 1e-9 * k)
-      throw hinf::Error(hinf::ErrorCode::InvalidInput, "--duration " + hinf::number_text(*o.duration) +
-                                                           ": must be a whole multiple of control_sample_time " +
-                                                           hinf::number_text(s.control_sample_time));
-    s.duration = *o.duration;
+    s.duration = checked_duration(*o.duration, s.control_sample_time);
     if (s.steady_state_start >= s.duration) s.steady_state_start = s.duration / 2;
   }
   ObtainedController c;
@@ -58,19 +53,17 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
 
 void write_hold_outputs(const Options& o, const HoldSetup& setup, const std::vector<HoldRunResult>& results,
                         const HoldSummaryContext& context, const std::string& controller_yaml) {
-  namespace fs = std::filesystem;
-  hinf::sim_cli::create_output_directory(o.out_dir);
   const HoldTrajectory& tr = *results.front().trajectory;
-  hinf::AtomicFileSet outputs;
-  outputs.protect(o.scenario_path);
-  const auto at = [&](const char* name) { return (fs::path(o.out_dir) / name).string(); };
-  outputs.add(at("trajectory.csv"), format_hold_trajectory_csv(tr));
-  outputs.add(at("controller.yaml"), controller_yaml);
-  outputs.add(at("runs.csv"), format_hold_runs_csv(results));
-  outputs.add(at("summary.json"), format_hold_summary_json(setup.scenario, results, context));
-  if (!o.no_plots && setup.scenario.plots)
-    write_hold_plots(o.out_dir, tr, fs::path(o.scenario_path).stem().string(), outputs);
-  outputs.commit();
+  const ControllerSource& k = setup.scenario.controller;
+  write_run_directory(o,
+                      {{"trajectory.csv", format_hold_trajectory_csv(tr)},
+                       {"controller.yaml", controller_yaml},
+                       {"runs.csv", format_hold_runs_csv(results)},
+                       {"summary.json", format_hold_summary_json(setup.scenario, results, context)}},
+                      {k.file_path.empty() ? k.synthesize_path : k.file_path}, setup.scenario.plots,
+                      [&](const std::string& title, hinf::AtomicFileSet& outputs) {
+                        write_hold_plots(o.out_dir, tr, title, outputs);
+                      });
 }
 
 }  // namespace

@@ -14,6 +14,12 @@ std::uint64_t run_seed(std::uint64_t seed, long run_index) {
   return derive_seed(seed, static_cast<std::uint64_t>(run_index));
 }
 
+std::vector<std::uint64_t> run_seeds(std::uint64_t seed, long runs) {
+  std::vector<std::uint64_t> seeds;
+  for (long i = 0; i < runs; ++i) seeds.push_back(run_seed(seed, i));
+  return seeds;
+}
+
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
                                        const ProgressCallback& progress) {
   std::vector<RunResult> results(static_cast<std::size_t>(runs));

@@ -181,4 +181,42 @@ TEST(HoldInvalid, Exit2NamesKeyWritesNothing) {
   }
 }
 
+// No output replaces a file the run reads (issue 34): with --out the scenario's own
+// directory, the synthesis config named controller.yaml would be replaced by the run's
+// controller.yaml. Exit 2 naming it, the config unchanged, nothing written.
+TEST(HoldInvalid, OutputsNeverReplaceTheFilesTheRunReads) {
+  const fs::path dir = fresh_dir("inputs");
+  fs::create_directories(dir);
+  std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "tumbling-hold-ideal.yaml");
+  const std::string from = "controller: {synthesize: ../tumbling-hold.yaml}";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "controller: {synthesize: controller.yaml}");
+  std::ofstream(dir / "scenario.yaml") << text;
+  fs::copy_file(fs::path(HINF_SOURCE_DIR) / "configs" / "tumbling-hold.yaml", dir / "controller.yaml");
+  const std::string config = slurp(dir / "controller.yaml");
+  const fs::path log = dir.string() + ".log";
+  EXPECT_EQ(run_scenario_file(dir / "scenario.yaml", "--duration 10 --no-plots", dir, log), 2) << slurp(log);
+  EXPECT_NE(slurp(log).find("is the input file '" + (dir / "controller.yaml").string() + "'"), std::string::npos)
+      << slurp(log);
+  EXPECT_EQ(slurp(dir / "controller.yaml"), config);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"controller.yaml", "scenario.yaml"}));
+  fs::remove_all(dir);
+  fs::remove(log);
+}
+
+// A --duration shorter than one control period would run no sample: refused (issue 34).
+TEST(HoldInvalid, DurationOfNoSampleIsRefused) {
+  const fs::path dir = fresh_dir("no_sample");
+  const fs::path log = dir.string() + ".log";
+  const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "tumbling-hold-ideal.yaml";
+  EXPECT_EQ(run_scenario_file(scenario, "--duration 1e-9", dir, log), 2) << slurp(log);
+  EXPECT_NE(slurp(log).find("--duration 1e-9: is shorter than one sample time (0.1 s)"), std::string::npos)
+      << slurp(log);
+  EXPECT_FALSE(fs::exists(dir));
+  fs::remove(log);
+}
+
 }  // namespace

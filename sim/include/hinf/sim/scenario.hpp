@@ -43,9 +43,13 @@ struct FilterSelection {
 constexpr double kMaxSimulationSteps = 1e7;
 
 // Why (duration, sample_time) is not a run's timing, or "" if it is: the duration must
-// be a whole number of sample times, and at most kMaxSimulationSteps of them. The one
-// rule of the scenario file and of hinf-sim's --duration.
+// be a whole number of sample times, at least one and at most kMaxSimulationSteps of them.
+// The one rule of the Hill scenario file and of hinf-sim's --duration in every family.
 std::string timing_problem(double duration, double sample_time);
+
+// --duration D of a run sampled every `sample_time` s: D, or Error(InvalidInput)
+// "--duration D: <timing_problem>".
+double checked_duration(double duration, double sample_time);
 
 struct Scenario {
   std::string path;  // the file it was read from (for messages and relative paths)
