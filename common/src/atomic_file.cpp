@@ -89,16 +89,23 @@ int existing_mode(const std::string& path) {
   return static_cast<int>(st.st_mode & 07777);
 }
 
-// Creates a new temporary beside `path` exclusively; returns its descriptor and name.
-int create_temporary(const std::string& path, std::string& name) {
+// Creates a new temporary beside `path` exclusively; returns its descriptor, name and
+// signal slot. The name is registered for removal on a signal before the file exists, so
+// no signal finds it unregistered (a name registered but not yet created is harmless: the
+// handler's unlink fails).
+int create_temporary(const std::string& path, std::string& name, int& slot) {
   const fs::path p(path);
   const std::string stem = (fs::path(directory_of(path)) / ("." + p.filename().string() + ".tmp.")).string() +
                            std::to_string(::getpid()) + "." + random_suffix() + ".";
   for (int attempt = 0; attempt < kTemporaryNameAttempts; ++attempt) {
     name = stem + std::to_string(attempt);
+    slot = register_temporary(name);
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
     if (fd >= 0) return fd;
-    if (errno != EEXIST) fail(path, "cannot create a temporary file in '" + directory_of(path) + "': " + std::strerror(errno));
+    const int err = errno;
+    unregister_temporary(slot);  // not ours
+    slot = -1;
+    if (err != EEXIST) fail(path, "cannot create a temporary file in '" + directory_of(path) + "': " + std::strerror(err));
   }
   fail(path, "no free temporary file name in '" + directory_of(path) + "'");
 }
@@ -117,15 +124,16 @@ int write_all_and_sync(int fd, const std::string& content) {
   return ::fsync(fd) == 0 ? 0 : errno;
 }
 
-std::string write_temporary(const std::string& path, const std::string& content) {
+std::string write_temporary(const std::string& path, const std::string& content, int& slot) {
   const int mode = existing_mode(path);
   std::string name;
-  const int fd = create_temporary(path, name);
+  const int fd = create_temporary(path, name, slot);
   int err = write_all_and_sync(fd, content);
   if (err == 0 && mode >= 0 && ::fchmod(fd, static_cast<mode_t>(mode)) != 0) err = errno;
   if (::close(fd) != 0 && err == 0) err = errno;
   if (err != 0) {
     ::unlink(name.c_str());
+    unregister_temporary(slot);
     fail(path, std::strerror(err));
   }
   return name;
@@ -174,8 +182,9 @@ void AtomicFileSet::refuse_input(const std::string& target) const {
 
 std::string AtomicFileSet::add(const std::string& path, const std::string& content) {
   refuse_input(path);
-  const std::string temporary = write_temporary(path, content);
-  entries_.push_back({temporary, path, register_temporary(temporary), std::string(), -1});
+  int slot = -1;
+  const std::string temporary = write_temporary(path, content, slot);
+  entries_.push_back({temporary, path, slot, std::string(), -1});
   return temporary;
 }
 

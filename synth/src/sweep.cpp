@@ -7,6 +7,7 @@
 
 #include "hinf/common/number_text.hpp"
 #include "hinf/synth/synthesis.hpp"
+#include "bisection.hpp"
 
 namespace hinf::synth {
 namespace {
@@ -137,23 +138,20 @@ FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, doubl
   s.bracketed = true;
   s.smallest_not_certified = high;
   // Invariant: certified at largest_certified, not at smallest_not_certified (§21).
-  while (s.smallest_not_certified->value - s.largest_certified.value > tolerance) {
-    const double mid = 0.5 * (s.largest_certified.value + s.smallest_not_certified->value);
+  double certified = lo, not_certified = hi;
+  bisect(certified, not_certified, tolerance, [&](double mid) {
     const SweepPoint p = run(mid);
     if (p.outcome == ErrorCode::Ok) s.largest_certified = p;
     else s.smallest_not_certified = p;
-  }
+    return p.outcome == ErrorCode::Ok;
+  });
   s.width = s.smallest_not_certified->value - s.largest_certified.value;
   // Above a numerical failure, the verified-infeasible side is bisected too (its verdicts
   // are cheap: the pre-flight's witness), so that [largest certified, smallest verified
   // infeasible] brackets the boundary with the band of no verdict named in between.
   if (s.smallest_infeasible && s.smallest_not_certified->outcome != ErrorCode::Infeasible) {
-    double below = s.smallest_not_certified->value;
-    while (s.smallest_infeasible->value - below > tolerance) {
-      const double mid = 0.5 * (below + s.smallest_infeasible->value);
-      const SweepPoint p = run(mid);
-      if (p.outcome != ErrorCode::Infeasible) below = mid;
-    }
+    double below = s.smallest_not_certified->value, infeasible = s.smallest_infeasible->value;
+    bisect(below, infeasible, tolerance, [&](double mid) { return run(mid).outcome != ErrorCode::Infeasible; });
   }
   return s;
 }

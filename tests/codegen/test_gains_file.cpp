@@ -2,9 +2,13 @@
 // rejected ones (file, position, key path, expected and actual sizes).
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "codegen_test_support.hpp"
+#include "hinf/common/error.hpp"
+#include "hinf/runtime_yaml/controller_file.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
 
@@ -170,6 +174,27 @@ TEST(GainsFile, OptionalScalarsAreChecked) {
                                       "89abcdef",
                                "xyz")),
              "config_sha256: expected 64 hexadecimal digits, got 'xyz'");
+}
+
+// A controller file's config_sha256 is read by the same rule as a gains file's (issue 34: any
+// word was accepted).
+TEST(ControllerFile, ConfigSha256MustBeSixtyFourHexDigits) {
+  std::ifstream in(std::string(HINF_TEST_CONTROLLERS_DIR) + "/../../golden/tumbling-hold.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string good = text.str();
+  ASSERT_NE(good.find("config_sha256: "), std::string::npos);
+  EXPECT_NO_THROW(hinf::runtime_yaml::parse_controller_yaml(good, "k.yaml"));
+  const std::size_t at = good.find("config_sha256: ") + std::string("config_sha256: ").size();
+  const std::string bad = good.substr(0, at) + "xyz" + good.substr(good.find('\n', at));
+  try {
+    hinf::runtime_yaml::parse_controller_yaml(bad, "k.yaml");
+    FAIL() << "accepted config_sha256: xyz";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("config_sha256: expected 64 hexadecimal digits, got 'xyz'"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GainsFile, NotAGainsFileAtAll) {

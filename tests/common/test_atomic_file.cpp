@@ -97,4 +97,36 @@ TEST(AtomicFileSet, SignalsRemoveTheTemporaries) {
   }
 }
 
+// A signal that arrives while a temporary is still being written removes it too: the name is
+// registered before the file exists (issue 34: registered only once fully written, so 2 of 8
+// random signals left one). The child writes one large file; SIGTERM is sent as soon as its
+// temporary appears. If the write finished first (the child exited), a larger one is tried.
+TEST(AtomicFileSet, ASignalWhileATemporaryIsBeingWrittenLeavesNothing) {
+  bool interrupted = false;
+  for (std::size_t size = std::size_t{16} << 20; size <= (std::size_t{256} << 20) && !interrupted; size *= 2) {
+    ScratchDir dir("atomic_file_writing");
+    const std::string content(size, 'x');  // allocated before the fork: the child only writes
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      hinf::remove_temporaries_on_signals();
+      hinf::write_file_atomic(dir / "big.bin", content);
+      ::_exit(0);
+    }
+    bool seen = false;
+    for (int i = 0; i < 100000 && !seen; ++i) {  // up to ~20 s
+      for (const auto& e : fs::directory_iterator(dir.path))
+        seen = seen || e.path().filename().string().rfind(".big.bin.tmp.", 0) == 0;
+      if (!seen) ::usleep(200);
+    }
+    ::kill(child, SIGTERM);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    if (!WIFSIGNALED(status)) continue;  // the write was over before the signal
+    interrupted = true;
+    EXPECT_EQ(dir.entries(), 0) << "a signal during the write left the temporary";
+  }
+  EXPECT_TRUE(interrupted) << "every write finished before the signal; nothing was tested";
+}
+
 }  // namespace

@@ -3,12 +3,14 @@
 // boundary s* = 1/‖E(zI − A)⁻¹H‖∞ of (135) computed independently (symplectic pencil).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "hinf/certify/hinf_norm.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/sweep.hpp"
+#include "bisection.hpp"
 
 namespace {
 
@@ -42,6 +44,27 @@ std::string error_of(const std::function<void()>& f) {
   }
   ADD_FAILURE() << "accepted";
   return "";
+}
+
+// The search's bisection stops at the tolerance, or at floating-point resolution when the
+// tolerance is below it (issue 34: --tolerance 1e-300 never ended).
+TEST(Sweep, BisectionStopsAtTheToleranceOrAtFloatingPointResolution) {
+  const auto below = [](double v) { return v < 0.3; };
+  double good = 0, bad = 1;
+  EXPECT_EQ(synth::bisect(good, bad, 1e-3, below), 10);  // 2^-10 < 1e-3 < 2^-9
+  EXPECT_LT(good, 0.3);
+  EXPECT_GE(bad, 0.3);
+  EXPECT_LE(bad - good, 1e-3);
+  good = 0, bad = 1;
+  const int n = synth::bisect(good, bad, 1e-300, below);
+  EXPECT_LE(n, 60);  // about 54 halvings reach the spacing of doubles near 0.3
+  EXPECT_LT(good, 0.3);
+  EXPECT_GE(bad, 0.3);
+  EXPECT_EQ(std::nextafter(good, 1.0), bad);  // adjacent doubles: nothing left to halve
+  double high_good = 1, low_bad = 0;  // the bracket the other way round
+  synth::bisect(high_good, low_bad, 1e-300, [](double v) { return v >= 0.3; });
+  EXPECT_GE(high_good, 0.3);
+  EXPECT_EQ(std::nextafter(low_bad, 1.0), high_good);
 }
 
 TEST(Sweep, RangesAreComputedFromTheirIndexAndBadOnesNamed) {

@@ -6,6 +6,7 @@
 #include "hinf/common/error.hpp"
 #include "hinf/common/input_file.hpp"
 #include "hinf/common/yaml_reader.hpp"
+#include "file_header.hpp"
 
 namespace hinf::runtime_yaml {
 namespace {
@@ -52,7 +53,7 @@ ControllerFile parse_controller_yaml(const std::string& text, const std::string&
     top.fail("format", "unsupported format '" + top.word("format") + "', expected '" + kFormat + "'");
   ControllerFile k;
   k.tool = top.word("tool", "");
-  k.config_sha256 = top.word("config_sha256", "");
+  k.config_sha256 = read_config_sha256(top);
   top.required("time", "continuous or discrete");
   k.discrete = top.choice("time", {"continuous", "discrete"}) == "discrete";
   if (k.discrete) {

@@ -5,8 +5,6 @@
 // the key path and the sizes.
 #include "hinf/runtime_yaml/gains_file.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +13,7 @@
 #include "hinf/common/error.hpp"
 #include "hinf/common/input_file.hpp"
 #include "hinf/common/yaml_reader.hpp"
+#include "file_header.hpp"
 
 namespace hinf::runtime_yaml {
 namespace {
@@ -34,12 +33,6 @@ std::string dims(const Eigen::MatrixXd& m) {
   return std::to_string(m.rows()) + "x" + std::to_string(m.cols());
 }
 
-bool is_hex64(const std::string& s) {
-  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
-           return std::isxdigit(static_cast<unsigned char>(c)) != 0;
-         });
-}
-
 // format (required and exactly kFormat), tool, config_sha256, gamma, gamma_squared.
 void read_header(const YamlMap& top, GainsFile& g) {
   top.required("format", std::string("expected 'format: ") + kFormat + "'");
@@ -47,9 +40,7 @@ void read_header(const YamlMap& top, GainsFile& g) {
   if (format != kFormat)
     top.fail("format", "unsupported format '" + format + "', expected '" + kFormat + "'");
   g.tool = top.word("tool", "");
-  g.config_sha256 = top.word("config_sha256", "");
-  if (top.has("config_sha256") && !is_hex64(g.config_sha256))
-    top.fail("config_sha256", "expected 64 hexadecimal digits, got '" + g.config_sha256 + "'");
+  g.config_sha256 = read_config_sha256(top);
   if (top.has("gamma")) g.gamma = top.positive("gamma");
   if (top.has("sample_time")) g.sample_time = top.positive("sample_time");
   if (top.has("gamma_squared")) top.positive("gamma_squared");
