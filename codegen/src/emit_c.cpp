@@ -90,6 +90,18 @@ struct Names {
   std::string real;
 };
 
+// A filter with a known input u (docs/maths.md (121), r = columns of G_F > 0): its step takes
+// u after y, and the state update gains the term G_F u(k). Empty strings without one.
+struct KnownInput {
+  bool present = false;
+  std::string parameter;  // "const double u[NAV_NU], "
+  std::string term;       // " + G_F u(k)"
+};
+KnownInput known_input(const Names& nm, const FilterData& d) {
+  if (d.G_F.cols() == 0) return {};
+  return {true, "const " + nm.real + " u[" + nm.P + "_NU], ", " + G_F u(k)"};
+}
+
 // What the generated system is called in the code and its comments: a filter (y → z_F,
 // docs/maths.md (5)-(6)) or a controller (y → u, (146)); the arithmetic is the same.
 struct Vocabulary {
@@ -130,6 +142,7 @@ std::string provenance(const std::string& file, const std::string& what,
          : g.filtered       ? "observer, filtered estimate (A_F = A - K C, B_F = K, C_F = L - L M C, D_F = L M)"
          : g.observer_form ? "observer (A_F = A - K C, B_F = K, C_F = L)"
                            : "augmented")
+     << (!v.controller && g.G_F.cols() > 0 ? ", with a known input u (G_F = G, docs/maths.md (121))" : "")
      << "\n * Real type: " << type_name(o.real) << "\n */\n";
   return os.str();
 }
@@ -141,6 +154,7 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
   const std::string& r = nm.real;
   const bool controller = v.controller;
   const std::string o_ = v.out, x = controller ? "x_K" : "x_F";
+  const KnownInput ki = known_input(nm, d);
   std::ostringstream os;
   os << provenance(p + ".h", v.what + " '" + p + "' (C99)", g, o, v) << "/*\n";
   if (controller)
@@ -152,7 +166,8 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
                  " *   z(k)     = C_F x_F(k) + D_F y(k)      estimate of z(k) from y(0..k)\n"
                : " * The filter (a one-step predictor, docs/maths.md (5)-(6)):\n"
                  " *   z(k)     = C_F x_F(k)                 estimate of z(k) from y(0..k-1)\n");
-  os << " *   " << x << "(k+1) = " << v.A << " " << x << "(k) + " << v.B << " " << (controller ? "e" : "y") << "(k)\n"
+  os << " *   " << x << "(k+1) = " << v.A << " " << x << "(k) + " << v.B << " " << (controller ? "e" : "y") << "(k)"
+     << ki.term << (ki.present ? "   u: the known input, (121)" : "") << "\n"
      << " *   " << x << "(0)   = pinv(" << v.C << ") " << o_ << "0               (pseudo-inverse computed offline"
      << (controller ? "; u0 = 0: at rest" : "") << ")\n"
      << " * No heap, no recursion, no libm, fixed loop bounds; the state is the\n"
@@ -163,7 +178,9 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n"
      << "#define " << P << "_NX " << d.A_F.rows() << " /* " << (controller ? "controller" : "filter") << " state dimension n */\n"
      << "#define " << P << "_NY " << d.B_F.cols() << " /* " << (controller ? "controller input (measurement) dimension" : "measurement dimension m") << " */\n"
-     << "#define " << P << "_" << v.OUT << " " << d.C_F.rows() << " /* " << v.out_dimension << " */\n\n"
+     << "#define " << P << "_" << v.OUT << " " << d.C_F.rows() << " /* " << v.out_dimension << " */\n"
+     << (ki.present ? "#define " + P + "_NU " + std::to_string(d.G_F.cols()) + " /* known-input dimension r */\n" : "")
+     << "\n"
      << "typedef " << r << " " << p << "_real;\n\n"
      << "typedef struct {\n  " << r << " x[" << P << "_NX];\n} " << p << "_state;\n\n"
      << "/* Sets " << x << "(0) = pinv(" << v.C << ") " << o_ << "0, " << o_ << "0 an initial "
@@ -171,8 +188,9 @@ std::string header_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "void " << p << "_init(" << p << "_state *s, const " << r << " " << o_ << "0[" << P << "_" << v.OUT << "]);\n\n"
      << "/* Writes " << o_ << " = " << (d.feedthrough ? v.C + " " + x + "(k) + " + v.D + " y(k)" : v.C + " " + x + "(k)")
      << (controller ? ", the control u(k)" : ", the estimate of z(k)") << ", then advances\n"
-     << " * " << x << "(k+1) = " << v.A << " " << x << "(k) + " << v.B << " y(k). y and " << o_ << " must not overlap s. */\n"
-     << "void " << p << "_step(" << p << "_state *s, const " << r << " y[" << P << "_NY], " << r
+     << " * " << x << "(k+1) = " << v.A << " " << x << "(k) + " << v.B << " y(k)" << ki.term << ". y"
+     << (ki.present ? ", u" : "") << " and " << o_ << " must not overlap s. */\n"
+     << "void " << p << "_step(" << p << "_state *s, const " << r << " y[" << P << "_NY], " << ki.parameter << r
      << " " << o_ << "[" << P << "_" << v.OUT << "]);\n\n"
      << "#ifdef __cplusplus\n}\n#endif\n\n"
      << "#endif /* " << P << "_H_GENERATED */\n";
@@ -186,6 +204,7 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
   const std::string& r = nm.real;
   const std::string zero = literal(0.0, o.real);
   const std::string OUT = P + "_" + v.OUT, o_ = v.out;
+  const KnownInput ki = known_input(nm, d);
   std::ostringstream os;
   os << provenance(p + ".c", v.what + " '" + p + "' (C99)", g, o, v) << "\n"
      << "#include \"" << p << ".h\"\n\n"
@@ -201,6 +220,9 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
      << (d.feedthrough ? "/* " + v.D + " (l x m) */\nstatic const " + r + " " + p + "_" + v.D + "[" + OUT + "][" + P + "_NY] = " +
                              rows_initializer(d.D_F, o.real) + ";\n\n"
                        : std::string())
+     << (ki.present ? "/* G_F (n x r), the known input's */\nstatic const " + r + " " + p + "_G_F[" + P + "_NX][" + P +
+                          "_NU] = " + rows_initializer(d.G_F, o.real) + ";\n\n"
+                    : std::string())
      << "/* pinv(" << v.C << ") (n x l), Moore-Penrose pseudo-inverse */\n"
      << "static const " << r << " " << p << "_" << v.C << "_pinv[" << P << "_NX][" << OUT << "] = "
      << rows_initializer(d.C_F_pinv, o.real) << ";\n\n"
@@ -214,7 +236,7 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "    s->x[i] = acc;\n"
      << "  }\n"
      << "}\n\n"
-     << "void " << p << "_step(" << p << "_state *s, const " << r << " y[" << P << "_NY], " << r
+     << "void " << p << "_step(" << p << "_state *s, const " << r << " y[" << P << "_NY], " << ki.parameter << r
      << " " << o_ << "[" << OUT << "])\n"
      << "{\n"
      << "  " << r << " next[" << P << "_NX];\n"
@@ -235,6 +257,8 @@ std::string source_file(const Names& nm, const FilterData& d, const runtime_yaml
      << "    for (int j = 0; j < " << P << "_NY; ++j) {\n"
      << "      acc += " << p << "_" << v.B << "[i][j] * y[j];\n"
      << "    }\n"
+     << (ki.present ? "    for (int j = 0; j < " + P + "_NU; ++j) {\n      acc += " + p + "_G_F[i][j] * u[j];\n    }\n"
+                    : std::string())
      << "    next[i] = acc;\n"
      << "  }\n"
      << "  for (int i = 0; i < " << P << "_NX; ++i) {\n"
@@ -253,7 +277,7 @@ std::string vectors_file(const Names& nm, const TestVectors& tv, const runtime_y
   std::ostringstream os;
   os << provenance(p + "_vectors.h", "test vectors for " + p + "_init and " + p + "_step", g, o, v)
      << "/*\n"
-     << " * " << o_ << "0 and y(k): splitmix64 with seed " << o.vector_seed
+     << " * " << o_ << "0 and y(k)" << (tv.u.cols() > 0 ? ", then u(k)" : "") << ": splitmix64 with seed " << o.vector_seed
      << ", uniform in [-1, 1).\n"
      << " * " << o_ << "(k): the generator's evaluation of " << p << "_init(" << o_ << "0) and " << P
      << "_VEC_N calls of\n"
@@ -274,13 +298,17 @@ std::string vectors_file(const Names& nm, const TestVectors& tv, const runtime_y
      << vector_initializer(tv.z0, o.real) << ";\n\n"
      << "static const " << r << " " << p << "_vec_y[" << P << "_VEC_N][" << P << "_NY] = "
      << rows_initializer(tv.y, o.real) << ";\n\n"
+     << (tv.u.cols() > 0 ? "static const " + r + " " + p + "_vec_u[" + P + "_VEC_N][" + P + "_NU] = " +
+                               rows_initializer(tv.u, o.real) + ";\n\n"
+                         : std::string())
      << "static const " << r << " " << p << "_vec_" << o_ << "[" << P << "_VEC_N][" << OUT << "] = "
      << rows_initializer(tv.z, o.real) << ";\n\n"
      << "#endif /* " << P << "_VECTORS_H_GENERATED */\n";
   return os.str();
 }
 
-std::string check_file(const Names& nm, const runtime_yaml::GainsFile& g, const CodegenOptions& o, const Vocabulary& v) {
+std::string check_file(const Names& nm, const FilterData& d, const runtime_yaml::GainsFile& g, const CodegenOptions& o,
+                       const Vocabulary& v) {
   const std::string& p = nm.p;
   const std::string& P = nm.P;
   const std::string& r = nm.real;
@@ -304,7 +332,8 @@ std::string check_file(const Names& nm, const runtime_yaml::GainsFile& g, const 
      << "  int failures = 0;\n"
      << "  " << p << "_init(&s, " << p << "_vec_" << o_ << "0);\n"
      << "  for (int k = 0; k < " << P << "_VEC_N; ++k) {\n"
-     << "    " << p << "_step(&s, " << p << "_vec_y[k], " << o_ << ");\n"
+     << "    " << p << "_step(&s, " << p << "_vec_y[k], " << (known_input(nm, d).present ? p + "_vec_u[k], " : "")
+     << o_ << ");\n"
      << "    for (int i = 0; i < " << OUT << "; ++i) {\n"
      << "      " << r << " d = " << o_ << "[i] - " << p << "_vec_" << o_ << "[k][i];\n"
      << "      if (d < " << zero << ") {\n"
@@ -337,7 +366,7 @@ GeneratedFiles emit_files(const runtime_yaml::GainsFile& gains, const CodegenOpt
   out.files.push_back({nm.p + ".h", header_file(nm, data, gains, options, v)});
   out.files.push_back({nm.p + ".c", source_file(nm, data, gains, options, v)});
   out.files.push_back({nm.p + "_vectors.h", vectors_file(nm, tv, gains, options, v)});
-  out.files.push_back({nm.p + "_check.c", check_file(nm, gains, options, v)});
+  out.files.push_back({nm.p + "_check.c", check_file(nm, data, gains, options, v)});
   return out;
 }
 
@@ -364,11 +393,8 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
                                              std::to_string(gains.C_F.cols()));
   if (!gains.A_F.allFinite() || !gains.B_F.allFinite() || !gains.C_F.allFinite())
     throw Error(ErrorCode::InvalidInput, "the filter matrices contain non-finite entries");
-  if (gains.G_F.cols() > 0)
-    throw Error(ErrorCode::InvalidInput,
-                "the filter has a known input (filter.G_F, " + std::to_string(gains.G_F.cols()) +
-                    " columns), which the generated C does not take yet: its step function has no u argument, "
-                    "and C without it would fly a different filter; use the runtime's LtiFilter::step(y, u)");
+  if (gains.G_F.cols() > 0 && (gains.G_F.rows() != n || !gains.G_F.allFinite()))
+    throw Error(ErrorCode::InvalidInput, "filter.G_F must be n x r with finite entries, n = " + std::to_string(n));
   if (gains.filtered && (gains.D_F.rows() != gains.C_F.rows() || gains.D_F.cols() != gains.B_F.cols() ||
                          !gains.D_F.allFinite()))
     throw Error(ErrorCode::InvalidInput, "filter.D_F must be l x m with finite entries");

@@ -56,30 +56,36 @@ long double gamma_k(long double k, long double u) { return k * u / (1.0L - k * u
 // rounding error committed in step j, the state error is exactly
 //   e(k) = A^k e(0) + Σ_{j<k} A^(k-1-j) δ_j,
 // so |e(k)| ≤ |A^k| |e(0)| + Σ_{j<k} |A^(k-1-j)| |δ_j| componentwise, with
-// |e(0)| ≤ γ_l |pinv| |z0| and |δ_j| ≤ γ_{n+m} (|A| |x̂_j| + |B| |y_j|). Using the
-// powers of the (stable) A rather than powers of |A| keeps the bound realistic.
+// |e(0)| ≤ γ_l |pinv| |z0| and |δ_j| ≤ γ_{n+m+r} (|A| |x̂_j| + |B| |y_j| + |G| |u_j|) (G, u:
+// the known input of (121), r = 0 without). Using the powers of the (stable) A rather than
+// powers of |A| keeps the bound realistic.
 // Returns, per step and output, a bound on |computed z(k) − exact z(k)|:
 //   |C e(k)| + γ_n |C| |x̂_k|  with |C e(k)| bounded through |C A^i|.
 // With a feedthrough D (a filtered estimate, (140)) the output's own rounding is
 // γ_{n+m} (|C| |x̂_k| + |D| |y_k|) instead of γ_n |C| |x̂_k|.
-MatL running_bound(const MatL& A, const MatL& B, const MatL& C, const MatL* D, const MatL& P, const VecL& z0,
-                   const MatL& Y, const MatL& X, long double u) {
+struct RecursionData {
+  const MatL &A, &B, &C, &G, &P;
+  const MatL* D;  // nullptr without a feedthrough
+};
+MatL running_bound(const RecursionData& s, const VecL& z0, const MatL& Y, const MatL& U, const MatL& X,
+                   long double u) {
   const Eigen::Index steps = Y.rows();
-  const auto n = static_cast<long double>(A.rows());
-  const auto m = static_cast<long double>(B.cols());
-  const auto l = static_cast<long double>(C.rows());
+  const auto n = static_cast<long double>(s.A.rows());
+  const auto m = static_cast<long double>(s.B.cols());
+  const auto r = static_cast<long double>(s.G.cols());
+  const auto l = static_cast<long double>(s.C.rows());
   // |A^i| and |C A^i|, i = 0..steps-1.
   std::vector<MatL> abs_pow, abs_cpow;
-  MatL power = MatL::Identity(A.rows(), A.cols());
+  MatL power = MatL::Identity(s.A.rows(), s.A.cols());
   for (Eigen::Index i = 0; i < steps; ++i) {
     abs_pow.push_back(power.cwiseAbs());
-    abs_cpow.push_back((C * power).cwiseAbs());
-    power = A * power;
+    abs_cpow.push_back((s.C * power).cwiseAbs());
+    power = s.A * power;
   }
-  const MatL Aa = A.cwiseAbs(), Ba = B.cwiseAbs(), Ca = C.cwiseAbs();
-  const VecL e0 = gamma_k(l, u) * (P.cwiseAbs() * z0.cwiseAbs());
+  const MatL Aa = s.A.cwiseAbs(), Ba = s.B.cwiseAbs(), Ca = s.C.cwiseAbs(), Ga = s.G.cwiseAbs();
+  const VecL e0 = gamma_k(l, u) * (s.P.cwiseAbs() * z0.cwiseAbs());
   std::vector<VecL> delta;  // bounds on |δ_j|
-  MatL bound(steps, C.rows());
+  MatL bound(steps, s.C.rows());
   for (Eigen::Index k = 0; k < steps; ++k) {
     const auto ku = static_cast<std::size_t>(k);
     VecL e = abs_pow[ku] * e0;          // bound on |e(k)|
@@ -90,9 +96,12 @@ MatL running_bound(const MatL& A, const MatL& B, const MatL& C, const MatL* D, c
     }
     const VecL xa = X.col(k).cwiseAbs() + e;  // bound on |computed x(k)|
     const VecL ya = Y.row(k).transpose().cwiseAbs();
-    const VecL output = D ? VecL(gamma_k(n + m, u) * (Ca * xa + D->cwiseAbs() * ya)) : VecL(gamma_k(n, u) * (Ca * xa));
+    const VecL output =
+        s.D ? VecL(gamma_k(n + m, u) * (Ca * xa + s.D->cwiseAbs() * ya)) : VecL(gamma_k(n, u) * (Ca * xa));
     bound.row(k) = (ce + output).transpose();
-    delta.push_back(gamma_k(n + m, u) * (Aa * xa + Ba * ya));
+    VecL step = Aa * xa + Ba * ya;
+    if (r > 0) step += Ga * U.row(k).transpose().cwiseAbs();
+    delta.push_back(gamma_k(n + m + r, u) * step);
   }
   return bound;
 }
@@ -106,6 +115,7 @@ FilterData make_filter_data(const runtime_yaml::GainsFile& gains, Real real) {
   d.C_F = round_to(gains.C_F, real, "filter.C_F");
   d.feedthrough = gains.filtered;
   d.D_F = d.feedthrough ? round_to(gains.D_F, real, "filter.D_F") : Eigen::MatrixXd::Zero(d.C_F.rows(), d.B_F.cols());
+  d.G_F = gains.G_F.cols() > 0 ? round_to(gains.G_F, real, "filter.G_F") : Eigen::MatrixXd::Zero(d.A_F.rows(), 0);
   // Pseudo-inverse of the C_F that is emitted (after rounding), computed in double.
   const Eigen::MatrixXd pinv = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(d.C_F)
                                    .pseudoInverse();
@@ -117,7 +127,7 @@ FilterData make_filter_data(const runtime_yaml::GainsFile& gains, Real real) {
 
 TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std::uint64_t seed) {
   if (steps < 1) throw Error(ErrorCode::InvalidInput, "test-vector length must be at least 1");
-  const Eigen::Index m = data.B_F.cols(), l = data.C_F.rows(), n = data.A_F.rows();
+  const Eigen::Index m = data.B_F.cols(), l = data.C_F.rows(), n = data.A_F.rows(), r = data.G_F.cols();
   const auto rnd = [real](double v) {
     return real == Real::Float ? static_cast<double>(static_cast<float>(v)) : v;
   };
@@ -128,12 +138,15 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
   tv.y.resize(steps, m);
   for (Eigen::Index k = 0; k < steps; ++k)
     for (Eigen::Index j = 0; j < m; ++j) tv.y(k, j) = rnd(rng.uniform());
+  tv.u.resize(steps, r);
+  for (Eigen::Index k = 0; k < steps; ++k)
+    for (Eigen::Index j = 0; j < r; ++j) tv.u(k, j) = rnd(rng.uniform());
 
   const MatL A = data.A_F.cast<long double>(), B = data.B_F.cast<long double>(),
              C = data.C_F.cast<long double>(), D = data.D_F.cast<long double>(),
-             P = data.C_F_pinv.cast<long double>();
+             G = data.G_F.cast<long double>(), P = data.C_F_pinv.cast<long double>();
   const VecL z0 = tv.z0.cast<long double>();
-  const MatL Y = tv.y.cast<long double>();
+  const MatL Y = tv.y.cast<long double>(), U = tv.u.cast<long double>();
   MatL X(n, steps);
   MatL Z(steps, l);
   VecL x = P * z0;
@@ -141,6 +154,7 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
     X.col(k) = x;
     Z.row(k) = (C * x + D * Y.row(k).transpose()).transpose();
     x = A * x + B * Y.row(k).transpose();
+    if (r > 0) x += G * U.row(k).transpose();
   }
 
   const long double max_value = real == Real::Float ? FLT_MAX : DBL_MAX;
@@ -155,9 +169,8 @@ TestVectors make_test_vectors(const FilterData& data, Real real, int steps, std:
 
   const long double u = unit_roundoff(real);
   const long double u_ref = std::numeric_limits<long double>::epsilon() / 2;
-  const MatL* DF = data.feedthrough ? &D : nullptr;
-  const MatL bound = running_bound(A, B, C, DF, P, z0, Y, X, u) +
-                     running_bound(A, B, C, DF, P, z0, Y, X, u_ref) +
+  const RecursionData recursion{A, B, C, G, P, data.feedthrough ? &D : nullptr};
+  const MatL bound = running_bound(recursion, z0, Y, U, X, u) + running_bound(recursion, z0, Y, U, X, u_ref) +
                      u * Z.cwiseAbs();  // the expected values are stored rounded
   // The driver's subtraction |z − z_expected| is itself rounded (relative u).
   const long double tol = bound.maxCoeff() * (1.0L + 4.0L * u);

@@ -15,6 +15,7 @@ struct FilterData {
   Eigen::MatrixXd A_F, B_F, C_F;  // docs/maths.md (5)–(6)
   Eigen::MatrixXd D_F;            // l × m feedthrough of a filtered estimate (140); zero without
   bool feedthrough = false;       // the gains file has D_F (filter.estimate: filtered)
+  Eigen::MatrixXd G_F;            // n × r known input (121); n × 0 without
   Eigen::MatrixXd C_F_pinv;       // Moore–Penrose pseudo-inverse of C_F (n × l)
 };
 
@@ -24,13 +25,15 @@ FilterData make_filter_data(const runtime_yaml::GainsFile& gains, CodegenOptions
 struct TestVectors {
   Eigen::VectorXd z0;  // initial estimate passed to init (l)
   Eigen::MatrixXd y;   // inputs, row k = y(k) (N × m)
+  Eigen::MatrixXd u;   // known inputs, row k = u(k) (N × r; N × 0 without)
   Eigen::MatrixXd z;   // expected outputs, row k = z(k) (N × l), rounded to the real type
   double tolerance;    // bound on |z_generated(k) − z(k)|, see make_test_vectors
 };
 
-// Inputs: splitmix64(seed) mapped to uniform [-1, 1), rounded to the real type.
-// Expected outputs: init + docs/maths.md (5)–(6) (with D_F y(k), (140)) evaluated in long
-// double on the emitted data.
+// Inputs: splitmix64(seed) mapped to uniform [-1, 1), rounded to the real type: z0, then
+// y(0..N-1), then u(0..N-1) (so a filter without a known input has the vectors it always had).
+// Expected outputs: init + docs/maths.md (5)–(6) (with D_F y(k), (140), and G_F u(k), (121))
+// evaluated in long double on the emitted data.
 // Tolerance: an a-priori running rounding-error bound (Higham, "Accuracy and
 // Stability of Numerical Algorithms", §3.1: |fl(aᵀb) − aᵀb| ≤ γ_k |a|ᵀ|b|,
 // γ_k = k u / (1 − k u)) propagated through the recursion with |A_F|, for the target

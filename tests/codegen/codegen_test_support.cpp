@@ -100,6 +100,15 @@ runtime_yaml::GainsFile random_filtered_gains(std::uint64_t seed, int n, int m, 
   return g;
 }
 
+runtime_yaml::GainsFile with_known_input(runtime_yaml::GainsFile g, std::uint64_t seed, int r) {
+  if (!g.observer_form) {
+    g.observer_form = true;
+    g.K = g.B_F;
+  }
+  g.G_F = random_matrix(seed + 5, g.A_F.rows(), r);
+  return g;
+}
+
 namespace {
 std::string yaml_matrix(const Eigen::MatrixXd& m) {
   std::ostringstream os;
@@ -129,6 +138,7 @@ std::string gains_yaml(const runtime_yaml::GainsFile& g) {
   os << "  A_F:" << yaml_matrix(g.A_F) << "  B_F:" << yaml_matrix(g.B_F) << "  C_F:" << yaml_matrix(g.C_F);
   if (g.observer_form) os << "  K:" << yaml_matrix(g.K);
   if (g.filtered) os << "  M:" << yaml_matrix(g.M) << "  D_F:" << yaml_matrix(g.D_F);
+  if (g.G_F.cols() > 0) os << "  G_F:" << yaml_matrix(g.G_F);
   return os.str();
 }
 
@@ -146,11 +156,19 @@ Eigen::MatrixXd pinv_svd(const Eigen::MatrixXd& C) {
 Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
                                   const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
                                   const Eigen::VectorXd& z0, const Eigen::MatrixXd& Y) {
+  return reference_outputs(A, B, C, D, Eigen::MatrixXd::Zero(A.rows(), 0), z0, Y,
+                           Eigen::MatrixXd::Zero(Y.rows(), 0));
+}
+
+Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                                  const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
+                                  const Eigen::MatrixXd& G, const Eigen::VectorXd& z0,
+                                  const Eigen::MatrixXd& Y, const Eigen::MatrixXd& U) {
   Eigen::VectorXd x = pinv_svd(C) * z0;
   Eigen::MatrixXd Z(Y.rows(), C.rows());
   for (Eigen::Index k = 0; k < Y.rows(); ++k) {
     Z.row(k) = (C * x + D * Y.row(k).transpose()).transpose();
-    x = A * x + B * Y.row(k).transpose();
+    x = A * x + B * Y.row(k).transpose() + G * U.row(k).transpose();
   }
   return Z;
 }

@@ -40,6 +40,9 @@ runtime_yaml::GainsFile random_gains(std::uint64_t seed, int n, int m, int l);
 // The same with a filtered estimate's feedthrough D_F (l×m, docs/maths.md (140)) and the
 // observer gains K, M it comes with (form observer, estimate filtered).
 runtime_yaml::GainsFile random_filtered_gains(std::uint64_t seed, int n, int m, int l);
+// The same filter given a known input u (docs/maths.md (121)): G_F (n×r) random, in observer
+// form (K = B_F) as the tool writes it (the augmented form has no known input).
+runtime_yaml::GainsFile with_known_input(runtime_yaml::GainsFile g, std::uint64_t seed, int r);
 // A gains file (format hinf-gains/1) with 17 significant digits.
 std::string gains_yaml(const runtime_yaml::GainsFile& g);
 
@@ -47,10 +50,15 @@ std::string gains_yaml(const runtime_yaml::GainsFile& g);
 Eigen::MatrixXd random_matrix(std::uint64_t seed, Eigen::Index rows, Eigen::Index cols);
 
 // docs/maths.md (5)-(6) in double with an Eigen loop: x(0) = pinv(C) z0 (pinv by JacobiSVD),
-// row k of the result = z(k) = C x(k) + D y(k) (D = 0: the predictor), x(k+1) = A x(k) + B y(k).
+// row k of the result = z(k) = C x(k) + D y(k) (D = 0: the predictor), x(k+1) = A x(k) + B y(k)
+// (+ G u(k) with a known input, (121): row k of U = u(k); G n×0 and U N×0 without).
 Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
                                   const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
                                   const Eigen::VectorXd& z0, const Eigen::MatrixXd& Y);
+Eigen::MatrixXd reference_outputs(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                                  const Eigen::MatrixXd& C, const Eigen::MatrixXd& D,
+                                  const Eigen::MatrixXd& G, const Eigen::VectorXd& z0,
+                                  const Eigen::MatrixXd& Y, const Eigen::MatrixXd& U);
 Eigen::MatrixXd pinv_svd(const Eigen::MatrixXd& C);
 
 // Rounds every entry to float (and back).

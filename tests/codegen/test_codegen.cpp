@@ -16,6 +16,7 @@
 #include "codegen_test_support.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
+#include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
 #include "hinf/codegen/codegen.hpp"
 #include "hinf/common/error.hpp"
 
@@ -39,9 +40,10 @@ std::string compiler_tag(const std::string& cc) {
   return cc.find("clang") != std::string::npos ? "clang" : "gcc";
 }
 
-// A C program that reads z0 and then y(0), y(1), ... from a text file and prints
-// z(k) for each step, one line per step, 17 significant digits.
-std::string harness_source(const std::string& p, bool is_float) {
+// A C program that reads z0 and then y(0), y(1), ... (each y(k) followed by u(k) for a filter
+// with a known input, r > 0) from a text file and prints z(k) for each step, one line per
+// step, 17 significant digits.
+std::string harness_source(const std::string& p, bool is_float, Eigen::Index r) {
   std::string P = p;
   for (auto& c : P) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   const std::string fmt = is_float ? "%f" : "%lf";
@@ -50,6 +52,7 @@ std::string harness_source(const std::string& p, bool is_float) {
      << "int main(int argc, char **argv)\n{\n"
      << "  " << p << "_state s;\n  " << p << "_real z0[" << P << "_NZ];\n"
      << "  " << p << "_real y[" << P << "_NY];\n  " << p << "_real z[" << P << "_NZ];\n"
+     << (r > 0 ? "  " + p + "_real u[" + P + "_NU];\n" : "")
      << "  FILE *f;\n"
      << "  if (argc != 2) { return 2; }\n"
      << "  f = fopen(argv[1], \"r\");\n  if (f == NULL) { return 2; }\n"
@@ -60,7 +63,10 @@ std::string harness_source(const std::string& p, bool is_float) {
      << "    for (i = 0; i < " << P << "_NY; ++i) {\n"
      << "      if (fscanf(f, \"" << fmt << "\", &y[i]) != 1) { break; }\n    }\n"
      << "    if (i < " << P << "_NY) { break; }\n"
-     << "    " << p << "_step(&s, y, z);\n"
+     << (r > 0 ? "    for (i = 0; i < " + P + "_NU; ++i) {\n      if (fscanf(f, \"" + fmt +
+                     "\", &u[i]) != 1) { fclose(f); return 2; }\n    }\n"
+               : "")
+     << "    " << p << (r > 0 ? "_step(&s, y, u, z);\n" : "_step(&s, y, z);\n")
      << "    for (i = 0; i < " << P << "_NZ; ++i) { printf(\"%.17g \", (double)z[i]); }\n"
      << "    printf(\"\\n\");\n  }\n  fclose(f);\n  return 0;\n}\n";
   return os.str();
@@ -104,33 +110,52 @@ void expect_no_heap_or_libm(const std::string& object) {
 }
 
 struct Reference {
-  Eigen::MatrixXd A, B, C, D;  // coefficients the code implements (D = 0 without a feedthrough)
+  Eigen::MatrixXd A, B, C, D, G;  // coefficients the code implements (D = 0 without a feedthrough,
+                                  // G n×0 without a known input)
   Eigen::VectorXd z0;
   Eigen::MatrixXd Y;        // kSteps × m
+  Eigen::MatrixXd U;        // kSteps × r, the known input (r = 0: none)
   Eigen::MatrixXd Z;        // kSteps × l, double Eigen loop
-  Eigen::MatrixXd Z_lti;    // kSteps × l, the runtime's hinf::runtime::LtiFilter
+  Eigen::MatrixXd Z_lti;    // kSteps × l, the runtime's LtiFilter as its gains-file loader builds it
 };
 
-Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed) {
-  Reference r;
-  r.A = is_float ? hinf::test::to_float(g.A_F) : g.A_F;
-  r.B = is_float ? hinf::test::to_float(g.B_F) : g.B_F;
-  r.C = is_float ? hinf::test::to_float(g.C_F) : g.C_F;
-  const Eigen::MatrixXd D = g.filtered ? g.D_F : Eigen::MatrixXd::Zero(g.C_F.rows(), g.B_F.cols());
-  r.D = is_float ? hinf::test::to_float(D) : D;
-  r.z0 = hinf::test::random_matrix(seed, g.C_F.rows(), 1).col(0) * 3.0;
-  r.Y = hinf::test::random_matrix(seed + 7, kSteps, g.B_F.cols()) * 2.0;
-  if (is_float) {
-    r.z0 = hinf::test::to_float(r.z0);
-    r.Y = hinf::test::to_float(r.Y);
-  }
-  r.Z = hinf::test::reference_outputs(r.A, r.B, r.C, r.D, r.z0, r.Y);
-  hinf::runtime::LtiFilter lti(r.A, r.B, r.C, Eigen::MatrixXd::Zero(r.A.rows(), 0),
-                               g.filtered ? r.D : Eigen::MatrixXd(0, 0));
+// The filter the runtime flies from a gains file: hinf::runtime_yaml::make_lti_filter on the
+// file's text (the coefficients as the generated code has them), driven by the same inputs.
+Eigen::MatrixXd loaded_filter_outputs(GainsFile g, const Reference& r) {
+  g.A_F = r.A;
+  g.B_F = r.B;
+  g.C_F = r.C;
+  g.G_F = r.G;
+  if (g.filtered) g.D_F = r.D;
+  hinf::runtime::LtiFilter lti =
+      hinf::runtime_yaml::make_lti_filter(hinf::runtime_yaml::parse_gains_yaml(hinf::test::gains_yaml(g), "g.yaml"));
   lti.init(r.z0);
-  r.Z_lti.resize(r.Y.rows(), r.C.rows());
+  Eigen::MatrixXd Z(r.Y.rows(), r.C.rows());
   for (Eigen::Index k = 0; k < r.Y.rows(); ++k)
-    r.Z_lti.row(k) = lti.step(r.Y.row(k).transpose()).transpose();
+    Z.row(k) = (r.U.cols() > 0 ? lti.step(r.Y.row(k).transpose(), r.U.row(k).transpose())
+                               : lti.step(r.Y.row(k).transpose()))
+                   .transpose();
+  return Z;
+}
+
+// How the harness starts the filter: from a random initial estimate z0 (x_F(0) = pinv(C_F) z0),
+// or from z0 = 0 (x_F(0) = 0 exactly in every implementation).
+enum class Start { RandomEstimate, Zero };
+
+Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed, Start start) {
+  const auto rounded = [is_float](const Eigen::MatrixXd& M) { return is_float ? hinf::test::to_float(M) : M; };
+  Reference r;
+  r.A = rounded(g.A_F);
+  r.B = rounded(g.B_F);
+  r.C = rounded(g.C_F);
+  r.D = rounded(g.filtered ? g.D_F : Eigen::MatrixXd::Zero(g.C_F.rows(), g.B_F.cols()));
+  r.G = rounded(g.G_F.cols() > 0 ? g.G_F : Eigen::MatrixXd::Zero(g.A_F.rows(), 0));
+  r.z0 = start == Start::Zero ? Eigen::VectorXd::Zero(g.C_F.rows())
+                              : Eigen::VectorXd(rounded(hinf::test::random_matrix(seed, g.C_F.rows(), 1).col(0) * 3.0));
+  r.Y = rounded(hinf::test::random_matrix(seed + 7, kSteps, g.B_F.cols()) * 2.0);
+  r.U = rounded(hinf::test::random_matrix(seed + 11, kSteps, r.G.cols()) * 2.0);
+  r.Z = hinf::test::reference_outputs(r.A, r.B, r.C, r.D, r.G, r.z0, r.Y, r.U);
+  r.Z_lti = loaded_filter_outputs(g, r);
   return r;
 }
 
@@ -138,25 +163,27 @@ Reference make_reference(const GainsFile& g, bool is_float, std::uint64_t seed) 
 // independently of the generator's componentwise bound): with u = 2^-24,
 // γ_k = k u/(1 − k u), X a bound on ‖x(k)‖∞,
 //   ‖e(0)‖ ≤ (γ_l + 2u)‖pinv‖ ‖z0‖       (float dot products + pinv rounded to float)
-//   ‖δ_j‖ ≤ γ_{n+m}(‖A‖ X + ‖B‖ ‖y‖max)  (rounding in one step)
+//   ‖δ_j‖ ≤ γ_{n+m+r}(‖A‖ X + ‖B‖ ‖y‖max + ‖G‖ ‖u‖max)  (rounding in one step)
 //   |z err(k)| ≤ ‖C A^k‖ ‖e(0)‖ + Σ_{i<k} ‖C A^i‖ δ + γ_n ‖C‖ X,
 // the last term γ_{n+m} (‖C‖ X + ‖D‖ ‖y‖max) with the feedthrough D of a filtered estimate.
 double float_error_bound(const Reference& r) {
   const double u = std::ldexp(1.0, -24);
   const auto gam = [u](double k) { return k * u / (1.0 - k * u); };
   const double n = static_cast<double>(r.A.rows()), m = static_cast<double>(r.B.cols()),
-               l = static_cast<double>(r.C.rows());
+               l = static_cast<double>(r.C.rows()), nu = static_cast<double>(r.G.cols());
+  const double u_max = r.U.size() > 0 ? r.U.cwiseAbs().maxCoeff() : 0.0;
   const auto norm = [](const Eigen::MatrixXd& M) { return M.cwiseAbs().rowwise().sum().maxCoeff(); };
   // State bound: the exact states, plus a margin far above any rounding effect.
   Eigen::VectorXd x = hinf::test::pinv_svd(r.C) * r.z0;
   double X = x.cwiseAbs().maxCoeff();
   for (Eigen::Index k = 0; k < r.Y.rows(); ++k) {
-    x = r.A * x + r.B * r.Y.row(k).transpose();
+    x = r.A * x + r.B * r.Y.row(k).transpose() + r.G * r.U.row(k).transpose();
     X = std::max(X, x.cwiseAbs().maxCoeff());
   }
   X *= 1.01;
   const double e0 = (gam(l) + 2 * u) * norm(hinf::test::pinv_svd(r.C)) * r.z0.cwiseAbs().maxCoeff();
-  const double delta = gam(n + m) * (norm(r.A) * X + norm(r.B) * r.Y.cwiseAbs().maxCoeff());
+  const double known = nu > 0 ? norm(r.G) * u_max : 0.0;
+  const double delta = gam(n + m + nu) * (norm(r.A) * X + norm(r.B) * r.Y.cwiseAbs().maxCoeff() + known);
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(r.A.rows(), r.A.cols());
   double sum_ca = 0.0, max_ca = 0.0;
   for (Eigen::Index i = 0; i < r.Y.rows(); ++i) {
@@ -178,8 +205,8 @@ std::string codegen_program() {
 
 // Generates with `hinf-synth codegen`, compiles with each compiler, checks symbols, runs the generated check
 // driver and the harness, and compares with the Eigen reference.
-void check_generated(const GainsFile& g, const std::string& prefix, Real real,
-                     std::uint64_t seed) {
+void check_generated(const GainsFile& g, const std::string& prefix, Real real, std::uint64_t seed,
+                     Start start = Start::RandomEstimate) {
   const bool is_float = real == Real::Float;
   TempDir dir;
   // Through the real command line: gains file (17 digits, exact round trip) -> hinf-synth codegen.
@@ -188,7 +215,7 @@ void check_generated(const GainsFile& g, const std::string& prefix, Real real,
                                    " --prefix " + prefix + " --out " + dir.path() +
                                    (is_float ? " --real float" : " --real double"));
   ASSERT_EQ(gen.exit_code, 0) << gen.output;
-  const Reference ref = make_reference(g, is_float, seed);
+  const Reference ref = make_reference(g, is_float, seed, start);
   {
     std::ostringstream in;
     in.precision(17);
@@ -196,11 +223,12 @@ void check_generated(const GainsFile& g, const std::string& prefix, Real real,
     in << "\n";
     for (Eigen::Index k = 0; k < ref.Y.rows(); ++k) {
       for (Eigen::Index j = 0; j < ref.Y.cols(); ++j) in << ref.Y(k, j) << " ";
+      for (Eigen::Index j = 0; j < ref.U.cols(); ++j) in << ref.U(k, j) << " ";
       in << "\n";
     }
     hinf::test::write_text(dir / "inputs.txt", in.str());
   }
-  hinf::test::write_text(dir / "harness.c", harness_source(prefix, is_float));
+  hinf::test::write_text(dir / "harness.c", harness_source(prefix, is_float, ref.G.cols()));
   const std::string flags = hinf::test::strict_c_flags(is_float);
   const double scale = ref.Z.cwiseAbs().maxCoeff();
   const double tol = is_float ? float_error_bound(ref) : 1e-12 * scale;
@@ -276,6 +304,58 @@ TEST(CodegenCompiled, FilteredEstimate4x2x3Double) {
 }
 TEST(CodegenCompiled, FilteredEstimate4x2x3Float) {
   check_generated(hinf::test::random_filtered_gains(42, 4, 2, 3), "fnavf", Real::Float, 42);
+}
+
+// The known input u (docs/maths.md (121)): NAME_step(s, y, u, z), x_F(k+1) gains G_F u(k); with
+// and without the filtered estimate's feedthrough.
+TEST(CodegenCompiled, KnownInput5x2x3Double) {
+  check_generated(hinf::test::with_known_input(hinf::test::random_gains(51, 5, 2, 3), 51, 2), "unav", Real::Double, 51);
+}
+TEST(CodegenCompiled, KnownInput5x2x3Float) {
+  check_generated(hinf::test::with_known_input(hinf::test::random_gains(52, 5, 2, 3), 52, 2), "unavf", Real::Float, 52);
+}
+TEST(CodegenCompiled, KnownInputFilteredEstimate4x3x2Double) {
+  check_generated(hinf::test::with_known_input(hinf::test::random_filtered_gains(53, 4, 3, 2), 53, 3), "ufnav",
+                  Real::Double, 53);
+}
+TEST(CodegenCompiled, KnownInputFilteredEstimate4x3x2Float) {
+  check_generated(hinf::test::with_known_input(hinf::test::random_filtered_gains(54, 4, 3, 2), 54, 3), "ufnavf",
+                  Real::Float, 54);
+}
+
+// Every kind of gains file the tool writes, written by `hinf-synth solve` itself: the runtime
+// loader's filter, the compiled C and the independent loop agree on the same inputs (to
+// 1e-12 of the signal in double). The kinds are asserted, so the list cannot silently shrink.
+TEST(CodegenCompiled, EveryKindOfGainsFileTheToolWrites) {
+  struct Kind {
+    const char* config;
+    const char* prefix;
+    bool observer, filtered, known_input;
+  };
+  const Kind kinds[] = {
+      {HINF_TEST_CONFIGS_DIR "/paper-dbar0.05.yaml", "aug", false, false, false},
+      {HINF_TEST_PLANTS_DIR "/double-integrator.yaml", "obs", true, false, false},
+      {HINF_TEST_PLANTS_DIR "/double-integrator-filtered.yaml", "obsf", true, true, false},
+      {HINF_TEST_PLANTS_DIR "/triple-integrator-known-input.yaml", "obsu", true, false, true},
+      {HINF_TEST_PLANTS_DIR "/triple-integrator-known-input-filtered.yaml", "obsfu", true, true, true},
+  };
+  std::uint64_t seed = 60;
+  // A synthesised filtered estimate has C_F = L − L M C nearly singular where M C ≈ I on the
+  // measured states (double integrator: C_F(0,0) = 8.5e-8), so pinv(C_F) z0 is ill-conditioned
+  // and two correct pseudo-inverses (the implementations' COD, the reference's SVD) differ by
+  // cond(C_F)·u; those start at x_F(0) = 0. The init from a random z0 is compared on the
+  // well-conditioned random gains above.
+  for (const Kind& kind : kinds) {
+    SCOPED_TRACE(kind.config);
+    TempDir dir;
+    const auto solve = hinf::test::run(codegen_program() + " solve " + kind.config + " -o " + (dir / "gains.yaml"));
+    ASSERT_EQ(solve.exit_code, 0) << solve.output;
+    const GainsFile g = hinf::runtime_yaml::load_gains_file(dir / "gains.yaml");
+    EXPECT_EQ(g.observer_form, kind.observer);
+    EXPECT_EQ(g.filtered, kind.filtered);
+    EXPECT_EQ(g.G_F.cols() > 0, kind.known_input);
+    check_generated(g, kind.prefix, Real::Double, ++seed, kind.filtered ? Start::Zero : Start::RandomEstimate);
+  }
 }
 
 TEST(CodegenCompiled, CheckDriverDetectsAPerturbedCoefficient) {

@@ -240,6 +240,29 @@ TEST(GainsFile, MakeLtiFilter) {
   }
 }
 
+// The loader builds the whole filter the file describes (issue: it once passed A_F, B_F, C_F
+// only): a filtered estimate's z(k) = C_F x_F(k) + D_F y(k) and a known input's
+// x_F(k+1) = A_F x_F + B_F y + G_F u. One state, x_F(0) = 0, y = 1, u = 2, by hand:
+// z(0) = D_F = 0.75, x_F(1) = B_F + 2 G_F = 0.25 + 2·0.5 = 1.25, z(1) = C_F x_F(1) + D_F = 2·1.25 + 0.75.
+TEST(GainsFile, MakeLtiFilterCarriesFeedthroughAndKnownInput) {
+  const auto g = parse_gains_yaml(
+      "format: hinf-gains/1\nfilter:\n  form: observer\n  estimate: filtered\n  A_F: [[0.5]]\n  B_F: [[0.25]]\n"
+      "  C_F: [[2]]\n  K: [[0.25]]\n  M: [[0.1]]\n  D_F: [[0.75]]\n  G_F: [[0.5]]\n",
+      "f.yaml");
+  auto f = hinf::runtime_yaml::make_lti_filter(g, "f.yaml");
+  EXPECT_EQ(f.r(), 1);
+  const Eigen::VectorXd y = Eigen::VectorXd::Constant(1, 1.0), u = Eigen::VectorXd::Constant(1, 2.0);
+  EXPECT_THROW(f.step(y), std::invalid_argument);  // a filter with a known input needs u
+  EXPECT_EQ(f.step(y, u)(0), 0.75);
+  EXPECT_EQ(f.step(y, u)(0), 2.0 * 1.25 + 0.75);
+  // Without G_F the same file's filter steps on y alone and keeps its feedthrough.
+  auto p = hinf::runtime_yaml::make_lti_filter(
+      parse_gains_yaml("format: hinf-gains/1\nfilter:\n  form: observer\n  estimate: filtered\n  A_F: [[0.5]]\n"
+                       "  B_F: [[0.25]]\n  C_F: [[2]]\n  K: [[0.25]]\n  M: [[0.1]]\n  D_F: [[0.75]]\n",
+                       "p.yaml"));
+  EXPECT_EQ(p.step(y)(0), 0.75);
+}
+
 }  // namespace
 
 // The observer form (docs/maths.md (121)): filter.form, filter.K (required there and only
