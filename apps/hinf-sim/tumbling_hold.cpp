@@ -27,10 +27,7 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
   HoldSetup setup;
   setup.scenario = parse_hold_scenario(text, o.scenario_path);
   HoldScenario& s = setup.scenario;
-  if (o.duration) {
-    s.duration = checked_duration(*o.duration, s.control_sample_time);
-    if (s.steady_state_start >= s.duration) s.steady_state_start = s.duration / 2;
-  }
+  if (o.duration) set_hold_duration(s, *o.duration);
   ObtainedController c;
   try {
     c = obtain_hold_controller(s.controller, s.control_sample_time, status_log(o.verbose));

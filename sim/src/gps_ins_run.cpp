@@ -8,6 +8,7 @@
 #include "hinf/runtime/rekf.hpp"
 #include "hinf/sim/gps_ins_truth.hpp"
 #include "hinf/sim/rng.hpp"
+#include "hinf/sim/simulation_error.hpp"
 
 namespace hinf::sim {
 
@@ -23,6 +24,16 @@ namespace ix = models::gps_ins_index;
 
 constexpr double kDivergedPositionError = 10.0;  // m, after kDivergenceCheckStart
 constexpr double kDivergenceCheckStart = 2000.0;  // s
+
+// The relative truth x (docs/maths.md §29–30) at sample k finite, else SimulationError.
+void require_finite(long k, double t, const State& x) {
+  require_finite_truth("gps_ins", k, t, x,
+                       {{"relative position (m)", ix::kPosition, 3},
+                        {"relative velocity (m/s)", ix::kVelocity, 3},
+                        {"relative attitude (MRP)", ix::kAttitude, 3},
+                        {"relative rate (rad/s)", ix::kRate, 3},
+                        {"gyro bias (rad/s)", ix::kBias, 3}});
+}
 
 State initial_sigma(const GpsInsInitialError& e) {
   State s;
@@ -213,6 +224,7 @@ std::vector<GpsInsFilterStatistics> run_filters(const GpsInsScenario& scenario,
     st.truth.step(st.y, T_c + T_d, accel, st.process_rng);
     const models::GpsInsEpoch e1 = st.truth.epoch(t1);
     st.x_true = st.truth.relative_state(st.y, e1);
+    require_finite(k + 1, t1, st.x_true);
     const auto z = st.truth.measure(st.x_true, e1, st.sensor_rng);
     for (std::size_t i = 0; i < runners.size(); ++i) {
       GpsInsFilterStatistics& s = stats[i];
@@ -261,6 +273,7 @@ std::vector<GpsInsFilterStatistics> run_gps_ins(const GpsInsScenario& scenario,
   const Mat15 P0 = sigma0.cwiseProduct(sigma0).asDiagonal();
   models::GpsInsEpoch e0 = truth.epoch(0);
   State x_true = truth.relative_state(y, e0);  // the truth at t (the loop's start)
+  require_finite(0, 0.0, x_true);
   State delta = State::Zero();
   if (options.initial_error.sample)
     for (int i = 0; i < ix::kBias; ++i) delta(i) = sigma0(i) * initial_rng.normal();

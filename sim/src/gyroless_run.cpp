@@ -9,6 +9,7 @@
 #include "hinf/runtime/augmented_ekf.hpp"
 #include "hinf/sim/metrics.hpp"
 #include "hinf/sim/rng.hpp"
+#include "hinf/sim/simulation_error.hpp"
 
 namespace hinf::sim {
 
@@ -195,6 +196,10 @@ std::vector<State> gyroless_truth(const GyrolessScenario& s) {
     const double t = static_cast<double>(k) * s.sample_time;
     State x;
     x << y, s.torque(t);
+    require_finite_truth("gyroless_attitude", k, t, x,
+                         {{"attitude quaternion q", ix::kQuaternion, 4},
+                          {"body rate omega (rad/s)", ix::kRate, 3},
+                          {"disturbance torque (N m)", ix::kTorque, 3}});
     truth.push_back(x);
     if (k == n) break;
     for (int j = 0; j < s.truth_substeps; ++j) {

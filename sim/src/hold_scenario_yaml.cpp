@@ -17,16 +17,9 @@ const char* to_string(ModulatorKind k) {
   return k == ModulatorKind::Ideal ? "ideal" : k == ModulatorKind::Pwm ? "pwm" : "pwpf";
 }
 
-long HoldScenario::control_steps() const { return std::lround(duration / control_sample_time) + 1; }
-long HoldScenario::ticks_per_control() const { return std::lround(control_sample_time / integration_step); }
-
 namespace {
 
 using hinf::models::kRadiansPerDegree;
-
-// The most integration steps a run may take (1e8: 28 hours at 1 ms; a run of this size
-// takes about a minute on the development machine).
-constexpr double kMaxIntegrationSteps = 1e8;
 
 
 // `a` a whole multiple of `b` (to 1e-9 relative), as the run's timing requires.
@@ -46,9 +39,8 @@ void read_timing(const YamlMap& top, HoldScenario& s) {
   if (!whole_multiple(s.duration, s.control_sample_time))
     top.fail_value("duration", s.duration,
                    "must be a whole multiple of control_sample_time " + number_text(s.control_sample_time));
-  if (s.duration / s.integration_step > kMaxIntegrationSteps)
-    top.fail_value("duration", s.duration,
-                   "needs more than 1e8 integration steps of " + number_text(s.integration_step) + " s");
+  const std::string too_long = integration_problem(s);
+  if (!too_long.empty()) top.fail_value("duration", s.duration, too_long);
 }
 
 void read_target(const YamlMap& top, HoldScenario& s) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hinf/models/lvlh.hpp"
+#include "hinf/sim/simulation_error.hpp"
 
 namespace hinf::sim {
 
@@ -79,6 +80,14 @@ std::vector<ManoeuvringTruthSample> manoeuvring_truth(const ManoeuvringScenario&
     x.chaser = chaser;
     x.reference = reference.state(x.t);
     x.relative = models::relative_state_in_lvlh(x.reference, target, chaser);
+    Eigen::Matrix<double, 18, 1> all;
+    all << target.r, target.v, chaser.r, chaser.v, x.relative;
+    require_finite_truth("manoeuvring_target", k, x.t, all,
+                         {{"target position (ECI, m)", 0, 3},
+                          {"target velocity (ECI, m/s)", 3, 3},
+                          {"chaser position (ECI, m)", 6, 3},
+                          {"chaser velocity (ECI, m/s)", 9, 3},
+                          {"relative state in LVLH0", 12, 6}});
     if (k < n) {
       target = propagate(s, s.target_manoeuvres, reference, x.t, target, x.target_accel);
       chaser = propagate(s, s.chaser_manoeuvres, reference, x.t, chaser, x.chaser_accel);

@@ -117,6 +117,22 @@ inline void expect_invalid_values_exit_two(const std::string& family, const std:
   }
 }
 
+// configs/scenarios/NAME.yaml with `edits` (values that take the truth out of floating-point
+// range) run with `args`: exit 4 (was: exit 0 with NaN rows), the message names the sample and
+// the quantity (`expected`), and no run directory is written.
+inline void expect_non_finite_truth_exit_four(const std::string& family, const std::string& name,
+                                              const std::vector<std::pair<std::string, std::string>>& edits,
+                                              const std::string& args, const std::string& expected) {
+  const fs::path cfg = edited_scenario(name, "nonfinite", edits);
+  const fs::path out = fresh_dir(family, "nonfinite");
+  const fs::path log = out.string() + ".log";
+  EXPECT_EQ(run_scenario_file(cfg, args + " --quiet", out, log), 4) << slurp(log);
+  EXPECT_NE(slurp(log).find(expected), std::string::npos) << slurp(log);
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove(log);
+  fs::remove(cfg);
+}
+
 inline double metric_max(const YAML::Node& m) { return m.IsMap() ? m["max"].as<double>() : m.as<double>(); }
 inline double metric_mean(const YAML::Node& m) { return m.IsMap() ? m["mean"].as<double>() : m.as<double>(); }
 inline double metric_median(const YAML::Node& m) { return m.IsMap() ? m["median"].as<double>() : m.as<double>(); }

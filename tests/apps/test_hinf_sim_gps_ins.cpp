@@ -302,3 +302,11 @@ TEST(GpsInsAcceptance, TwentyRunsAtZeroAndThirtyPercent) {
   fs::remove(dd_cfg);
   fs::remove_all(dd);
 }
+
+// An orbit of radius 1000 m (inside the Earth) makes the truth non-finite within seconds:
+// exit 4 at the first non-finite sample, naming it.
+TEST(GpsInsScenarios, NonFiniteTruthExitsFourNamingSampleAndQuantity) {
+  expect_non_finite_truth_exit_four("gps_ins", "gps-ins-flyaround", {{"radius: 6899807", "radius: 1000"}, kNoTable1},
+                                    "--duration 100",
+                                    "gps_ins: the truth became non-finite at sample 4 (t = 4 s): relative position (m)");
+}

@@ -227,3 +227,11 @@ TEST(GyrolessAcceptance, TwentyRunsOfTheShippedScenario) {
   EXPECT_LE(f["astekf"]["lambda_cap_fraction"]["max"].as<double>(), 0.01);
   for (const auto& kv : f) EXPECT_EQ(kv.second["stopped"]["max"].as<double>(), 0.0) << kv.first;
 }
+
+// An orbital rate of 1e308 deg/s overflows the truth's attitude: exit 4 at the first
+// non-finite sample, naming it.
+TEST(GyrolessScenario, NonFiniteTruthExitsFourNamingSampleAndQuantity) {
+  expect_non_finite_truth_exit_four(
+      "gyroless", kScenario, {{"orbital_rate_deg_s: 0.06148839356680", "orbital_rate_deg_s: 1e308"}}, "--duration 100",
+      "gyroless_attitude: the truth became non-finite at sample 13 (t = 13 s): attitude quaternion q = [nan");
+}

@@ -219,4 +219,17 @@ TEST(HoldInvalid, DurationOfNoSampleIsRefused) {
   fs::remove(log);
 }
 
+// 9e5 s is 9e6 control samples (under the 1e7 every family allows) but 9e8 integration steps
+// of 1 ms: the hold family's own cap (1e8, the scenario file's rule) holds for --duration too.
+TEST(HoldInvalid, DurationOfTooManyIntegrationStepsIsRefused) {
+  const fs::path dir = fresh_dir("too_many_ticks");
+  const fs::path log = dir.string() + ".log";
+  const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "tumbling-hold-ideal.yaml";
+  EXPECT_EQ(run_scenario_file(scenario, "--duration 900000", dir, log), 2) << slurp(log);
+  EXPECT_NE(slurp(log).find("--duration 900000: needs more than"), std::string::npos) << slurp(log);
+  EXPECT_NE(slurp(log).find("integration steps of 0.001 s"), std::string::npos) << slurp(log);
+  EXPECT_FALSE(fs::exists(dir));
+  fs::remove(log);
+}
+
 }  // namespace

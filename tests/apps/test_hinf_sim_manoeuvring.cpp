@@ -323,3 +323,12 @@ TEST(ManoeuvringAcceptance, DetectorFindsTheOnsetQuickly) {
   EXPECT_LE(delay.back(), 20.0);
   EXPECT_LE(false_alarms / 100, 2e-3);
 }
+
+// A target thrust of 1e308 m/s² from 300 s overflows its orbit: exit 4 at the first
+// non-finite sample, naming it.
+TEST(ManoeuvringScenario, NonFiniteTruthExitsFourNamingSampleAndQuantity) {
+  expect_non_finite_truth_exit_four(
+      "manoeuvring", "manoeuvring-target-chaser-free",
+      {{"accel: [0.5, 0.5, 0.0]}]", "accel: [1e308, 0.5, 0.0]}]"}}, "--duration 400",
+      "manoeuvring_target: the truth became non-finite at sample 301 (t = 301 s): target position (ECI, m) = [nan");
+}

@@ -58,4 +58,18 @@ struct HoldScenario {
   long ticks_per_control() const;  // T_c / integration_step
 };
 
+// The most integration steps a run may take (1e8: 28 hours at 1 ms; a run of this size
+// takes about a minute on the development machine).
+constexpr double kMaxIntegrationSteps = 1e8;
+
+// Why s.duration needs too many integration steps (more than kMaxIntegrationSteps of
+// s.integration_step), or "" if it does not.
+std::string integration_problem(const HoldScenario& s);
+
+// hinf-sim --duration D on a hold scenario: D must be a run of control samples
+// (checked_duration, sim/scenario.hpp) and of at most kMaxIntegrationSteps integration steps;
+// else Error(InvalidInput) naming --duration. A steady-state window that would start after
+// the shorter run starts at its middle.
+void set_hold_duration(HoldScenario& s, double duration);
+
 }  // namespace hinf::sim

@@ -10,6 +10,7 @@
 #include "hinf/sim/estimator.hpp"
 #include "hinf/sim/metrics.hpp"
 #include "hinf/sim/scenario.hpp"
+#include "hinf/sim/simulation_error.hpp"
 #include "hinf/sim/vectors.hpp"
 
 namespace hinf::sim {
@@ -19,12 +20,6 @@ namespace hinf::sim {
 struct RunSetup {
   Scenario scenario;
   std::optional<LtiGains> hinf, published;
-};
-
-// A run that cannot continue (non-finite truth, thrust from a diverged estimate): exit 4.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 // Noise stream indices inside a run: stream seed = derive_seed(run seed, index).
