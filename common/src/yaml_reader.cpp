@@ -34,28 +34,6 @@ std::string node_kind(const YAML::Node& node) {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-// YAML 1.2 core schema float: [-+]? ( \. [0-9]+ | [0-9]+ ( \. [0-9]* )? ) ( [eE] [-+]? [0-9]+ )?
-bool is_core_float(const std::string& s) {
-  size_t i = 0;
-  const size_t n = s.size();
-  if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
-  size_t int_digits = 0, frac_digits = 0;
-  while (i < n && is_digit(s[i])) ++i, ++int_digits;
-  if (i < n && s[i] == '.') {
-    ++i;
-    while (i < n && is_digit(s[i])) ++i, ++frac_digits;
-  }
-  if (int_digits == 0 && frac_digits == 0) return false;
-  if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
-    size_t exp_digits = 0;
-    while (i < n && is_digit(s[i])) ++i, ++exp_digits;
-    if (exp_digits == 0) return false;
-  }
-  return i == n;
-}
-
 bool is_core_integer(const std::string& s) {
   size_t i = 0;
   if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
@@ -233,7 +211,7 @@ double YamlReader::number(const YAML::Node& node, const std::string& path) const
     return std::numeric_limits<double>::infinity();
   if (s == "-.inf" || s == "-.Inf" || s == "-.INF") return -std::numeric_limits<double>::infinity();
   if (s == ".nan" || s == ".NaN" || s == ".NAN") return std::numeric_limits<double>::quiet_NaN();
-  if (!is_core_float(s)) fail(node, path + " = '" + s + "': not a number");
+  if (!is_decimal_number(s)) fail(node, path + " = '" + s + "': not a number");
   errno = 0;
   const double v = std::strtod(s.c_str(), nullptr);
   if (errno == ERANGE && std::isinf(v))

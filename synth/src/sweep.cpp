@@ -93,7 +93,8 @@ std::vector<double> parse_sweep_range(const std::string& text, const std::string
     } catch (const std::exception&) {
       throw fail("'" + part + "' is not a number (expected LO:STEP:HI, e.g. 0:0.05:1)");
     }
-    if (used != part.size() || !std::isfinite(v)) throw fail("'" + part + "' is not a finite number");
+    if (used != part.size() || !std::isfinite(v) || !is_decimal_number(part))
+      throw fail("'" + part + "' is not a finite decimal number");
     parts.push_back(v);
     if (colon == std::string::npos) break;
     start = colon + 1;

@@ -187,6 +187,20 @@ TEST(Parameters, ExpressionsThatAreNotAffineOrNotWellFormedAreRefused) {
   EXPECT_HAS(expression_error(std::string(100000, '-') + "1"), "nested deeper");
 }
 
+// Numbers in expressions take the one decimal form of every input (hexadecimal refused as in a
+// YAML value); a message echoes a long expression by an excerpt, never whole.
+TEST(Parameters, HexadecimalRefusedAndLongExpressionsEchoedByAnExcerpt) {
+  EXPECT_HAS(expression_error("0x10 * k1"), "'0x10' is not a decimal number");
+  EXPECT_HAS(expression_error("1 + 0X1p3"), "'0X1p3' is not a decimal number");
+  EXPECT_EQ(affine("1.5e1 + .5").constant, 15.5);
+  const std::string long_sum = "1" + std::string(20000, ' ') + "+ nosuch";
+  const std::string message = expression_error(long_sum);
+  EXPECT_HAS(message, "unknown name 'nosuch'");
+  EXPECT_LT(message.size(), 400u) << message.size();
+  const std::string long_name = "1 + " + std::string(20000, 'q');
+  EXPECT_LT(expression_error(long_name).size(), 400u);
+}
+
 std::string config_error(const std::string& text) {
   try {
     synth::parse_config(text, "c.yaml");
@@ -214,6 +228,11 @@ TEST(Parameters, BadKeysAreNamed) {
   EXPECT_HAS(config_error(replaced(t, "[0.95, 1.05]", "[0.95]")), "parameters.k.range");
   EXPECT_HAS(config_error(replaced(t, "nominal: 1,", "nominal: 1, unit: N,")), "parameters.k");
   EXPECT_HAS(config_error(replaced(t, "  k: {", "  c: {")), "parameters.c: the name is already a constant");
+  // a name twice in one map: YAML would keep the last value silently (γ 1.534 -> 1.049)
+  EXPECT_HAS(config_error(replaced(t, "{c: 0.2}", "{c: 0.2, c: 0.3}")), "c.yaml:1:21: constants.c: declared twice in 'constants'");
+  EXPECT_HAS(config_error(replaced(t, "  k: {nominal: 1, range: [0.95, 1.05]}",
+                                   "  k: {nominal: 1, range: [0.95, 1.05]}\n  k: {nominal: 1, range: [0.9, 1.1]}")),
+             "parameters.k: declared twice in 'parameters'");
   EXPECT_HAS(config_error(replaced(t, "{c: 0.2}", "{2c: 0.2}")), "'2c' is not a name");
   EXPECT_HAS(config_error(replaced(t, "{c: 0.2}", "{c: .nan}")), "constants.c");
   EXPECT_HAS(config_error(t + "uncertainty: {H: [[0], [0], [-1], [1]], E: [[1, -1, 0, 0]]}\n"),
@@ -228,6 +247,9 @@ TEST(Parameters, BadKeysAreNamed) {
   const std::string hand = "system: {A: [[0.5, 0], [0, 0.5]], B: [[1], [1]], C: [[1, 0]], D: [[1]], L: [[1, 0]]}\n"
                            "uncertainty: {H: [[0.1, 0], [0, 0.1]], E: [[0.1, 0], [0, 0.1]], blocks: ";
   EXPECT_HAS(config_error(hand + "[1, 2]}\n"), "uncertainty.blocks");
+  // one block is F full, and must be all of F (a block of 1000000 once passed unchecked)
+  EXPECT_HAS(config_error(hand + "[1000000]}\n"), "uncertainty.blocks: one block of size 1000000, but F is 2x2");
+  EXPECT_NO_THROW(synth::parse_config(hand + "[2]}\n", "c.yaml"));
   EXPECT_HAS(config_error(hand + "[0, 2]}\n"), "uncertainty.blocks entry 1 = 0");
   EXPECT_HAS(config_error(hand + "[1.5, 0.5]}\n"), "uncertainty.blocks entry 1");
   EXPECT_HAS(config_error(hand + "3}\n"), "uncertainty.blocks");

@@ -74,7 +74,8 @@ TEST(Sweep, RangesAreComputedFromTheirIndexAndBadOnesNamed) {
   EXPECT_EQ(v[3], 3 * 0.05);
   EXPECT_EQ(v.back(), 20 * 0.05);
   EXPECT_EQ(synth::parse_sweep_range("0.25", "--param"), std::vector<double>{0.25});
-  for (const char* bad : {"0:0:1", "1:0.1:0", "a:1:2", "0:1", "0:0.1:1:2", "0:nan:1", "0:1e-9:1", "0:0.1:1x"})
+  for (const char* bad : {"0:0:1", "1:0.1:0", "a:1:2", "0:1", "0:0.1:1:2", "0:nan:1", "0:1e-9:1", "0:0.1:1x",
+                          "0x0:0.1:1", "0:0x1p-3:1", "0:0.1:inf"})  // one decimal form, as in the config
     EXPECT_HAS(error_of([&] { synth::parse_sweep_range(bad, "--param"); }), "--param '" + std::string(bad) + "'");
 }
 

@@ -5,6 +5,7 @@
 //   factor := number | name | '(' expr ')'
 #include "config/affine_expression.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -18,6 +19,19 @@ namespace {
 
 // Deeper nesting than this is refused (a hostile entry cannot exhaust the stack).
 constexpr int kMaxNesting = 64;
+// A message echoes an expression whole up to this many characters; a longer one (or a long
+// token in it) by the kEchoContext characters either side of where reading stopped.
+constexpr std::size_t kMaxEchoed = 160;
+constexpr std::size_t kEchoContext = 60;
+
+// `text` whole if short, else its characters [at − kEchoContext, at + kEchoContext) with
+// "..." where cut.
+std::string excerpt(const std::string& text, std::size_t at) {
+  if (text.size() <= kMaxEchoed) return text;
+  const std::size_t from = at > kEchoContext ? at - kEchoContext : 0;
+  const std::size_t to = std::min(text.size(), at + kEchoContext);
+  return (from > 0 ? "..." : "") + text.substr(from, to - from) + (to < text.size() ? "..." : "");
+}
 
 class AffineParser {
  public:
@@ -34,7 +48,7 @@ class AffineParser {
  private:
   [[noreturn]] void fail(const std::string& what) const {
     throw Error(ErrorCode::InvalidInput,
-                "'" + text_ + "': " + what + " (at character " + std::to_string(pos_ + 1) + ")");
+                "'" + excerpt(text_, pos_) + "': " + what + " (at character " + std::to_string(pos_ + 1) + ")");
   }
   void skip_space() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
@@ -121,6 +135,9 @@ class AffineParser {
     char* end = nullptr;
     const double v = std::strtod(begin, &end);
     if (end == begin) fail("not a number");
+    const std::string token(begin, static_cast<std::size_t>(end - begin));
+    if (!is_decimal_number(token))
+      fail("'" + excerpt(token, 0) + "' is not a decimal number (hexadecimal is refused here as everywhere in the file)");
     pos_ += static_cast<std::size_t>(end - begin);
     if (!std::isfinite(v)) fail("the number is not finite");
     return constant(v);
@@ -141,7 +158,7 @@ class AffineParser {
       }
     std::vector<std::string> names = symbols_.parameters;
     for (const auto& [n, v] : symbols_.constants) names.push_back(n);
-    std::string msg = "unknown name '" + word + "'";
+    std::string msg = "unknown name '" + excerpt(word, 0) + "'";
     if (const auto guess = closest_match(word, names)) msg += " (did you mean '" + *guess + "'?)";
     pos_ = start;
     fail(msg + "; names are declared under 'constants' and 'parameters'");

@@ -15,7 +15,9 @@ bool is_identifier(const std::string& s) {
   return true;
 }
 
-// The keys of a map of names, each an identifier not used before.
+// The keys of a map of names, each an identifier not used before: not a constant or parameter
+// already declared, and not twice in this map (YAML readers keep the last of two equal keys,
+// which would silently change the plant).
 std::vector<std::pair<std::string, YAML::Node>> named_entries(const YamlReader& reader, const YAML::Node& map,
                                                               const std::string& path, const ExpressionSymbols& seen) {
   if (!map.IsMap() || map.size() == 0) reader.fail(map, path + ": expected a non-empty map of names");
@@ -24,9 +26,11 @@ std::vector<std::pair<std::string, YAML::Node>> named_entries(const YamlReader& 
     const std::string name = it->first.IsScalar() ? it->first.Scalar() : std::string();
     if (!is_identifier(name))
       reader.fail(it->first, path + ": '" + name + "' is not a name (a letter or _, then letters, digits or _)");
-    const bool taken = seen.constants.count(name) > 0 ||
-                       std::find(seen.parameters.begin(), seen.parameters.end(), name) != seen.parameters.end();
-    if (taken) reader.fail(it->first, path + "." + name + ": the name is already a constant");
+    const bool twice = std::any_of(out.begin(), out.end(), [&](const auto& entry) { return entry.first == name; });
+    if (twice) reader.fail(it->first, path + "." + name + ": declared twice in '" + path + "'");
+    if (seen.constants.count(name) > 0) reader.fail(it->first, path + "." + name + ": the name is already a constant");
+    if (std::find(seen.parameters.begin(), seen.parameters.end(), name) != seen.parameters.end())
+      reader.fail(it->first, path + "." + name + ": the name is already a parameter");
     out.emplace_back(name, it->second);
   }
   return out;

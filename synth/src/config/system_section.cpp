@@ -127,7 +127,13 @@ Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                                                   std::to_string(size) + ": must be > 0");
         plant.F_blocks.push_back(size);
       }
-      if (plant.F_blocks.size() == 1) plant.F_blocks.clear();  // one block: F full
+      if (plant.F_blocks.size() == 1) {  // one block: F full, and it must be all of F
+        if (plant.F_blocks[0] != plant.H.cols() || plant.F_blocks[0] != plant.E.rows())
+          reader.fail(blocks, "uncertainty.blocks: one block of size " + std::to_string(plant.F_blocks[0]) +
+                                  ", but F is " + std::to_string(plant.E.rows()) + "x" + std::to_string(plant.H.cols()) +
+                                  " (rows of E x columns of H); the blocks are square and cover F");
+        plant.F_blocks.clear();
+      }
     }
   } else {
     plant.H = Eigen::MatrixXd::Zero(plant.A.rows(), 0);

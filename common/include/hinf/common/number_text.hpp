@@ -10,4 +10,10 @@ std::string number_text(double value);
 // `digits` significant digits (printf's %g), for tables and summaries read by people.
 std::string significant_text(double value, int digits);
 
+// The one form a number takes in every input of the tool (a YAML value, a number inside an
+// expression, a command-line value): YAML 1.2's core-schema float,
+// [-+]? ( \. [0-9]+ | [0-9]+ ( \. [0-9]* )? ) ( [eE] [-+]? [0-9]+ )?. No hexadecimal
+// (strtod's 0x1p3), no inf/nan words, no trailing text.
+bool is_decimal_number(const std::string& text);
+
 }  // namespace hinf
