@@ -216,6 +216,8 @@ int run_stages(const std::function<void()>& load, const std::function<void()>& s
   }
   try {
     simulate();
+  } catch (const hinf::Error& e) {  // a scenario value a filter refuses, named by its key
+    return fail(e.what(), e.code());
   } catch (const std::invalid_argument& e) {
     return fail(e.what(), hinf::ErrorCode::InvalidInput);
   } catch (const hinf::sim::SimulationError& e) {

@@ -37,8 +37,13 @@ HoldSetup load_hold_setup(const Options& o, const std::string& text, HoldSummary
   }
   if (o.verbose) std::cerr << "hinf-sim: controller: " << c.origin << "\n";
   setup.controller = c.discrete;
-  if (s.feedforward)
+  if (s.feedforward) {
     setup.feedforward = hinf::models::equilibrium_force(s.servicer_mass, s.nominal_rate, s.nominal_accel, s.hold_point);
+    if (!setup.feedforward.allFinite())
+      throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                        o.scenario_path + ": feedforward: the equilibrium force U* (docs/maths.md (158)) is not finite "
+                                          "for this servicer_mass, hold_point and feedforward rate_deg_s/accel_deg_s2");
+  }
   context.scenario_path = o.scenario_path;
   context.seed = o.seed;
   context.controller_origin = c.origin;

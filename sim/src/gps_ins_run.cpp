@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "hinf/common/number_text.hpp"
 #include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/rekf.hpp"
 #include "hinf/sim/gps_ins_truth.hpp"
@@ -209,7 +210,14 @@ std::vector<GpsInsFilterStatistics> run_filters(const GpsInsScenario& scenario,
                                                 const Mat15& P0) {
   std::vector<FilterRunner<Measurement>> runners;
   runners.reserve(filters.size());
-  for (const auto& f : filters) runners.emplace_back(scenario, f, x0, P0);
+  for (const auto& f : filters) {
+    try {
+      runners.emplace_back(scenario, f, x0, P0);
+    } catch (const std::invalid_argument& refusal) {
+      throw scenario_settings_error("filters." + f.name, refusal,
+                                    "the scenario's noise sigmas, gyro, initial error and this filter's settings");
+    }
+  }
   std::vector<WindowAccumulator> windows(filters.size());
   std::vector<GpsInsFilterStatistics> stats(filters.size());
 
@@ -228,9 +236,15 @@ std::vector<GpsInsFilterStatistics> run_filters(const GpsInsScenario& scenario,
     const auto z = st.truth.measure(st.x_true, e1, st.sensor_rng);
     for (std::size_t i = 0; i < runners.size(); ++i) {
       GpsInsFilterStatistics& s = stats[i];
-      for (const runtime::FilterStatus status : {runners[i].predict(st.e0, T_c), runners[i].update(e1, z)}) {
-        if (status == runtime::FilterStatus::GammaConditionViolated) ++s.gamma_violations;
-        else if (status != runtime::FilterStatus::Ok) ++s.failed_steps;
+      try {  // Q and the REKF's uncertainty are rebuilt at x̂ each step
+        for (const runtime::FilterStatus status : {runners[i].predict(st.e0, T_c), runners[i].update(e1, z)}) {
+          if (status == runtime::FilterStatus::GammaConditionViolated) ++s.gamma_violations;
+          else if (status != runtime::FilterStatus::Ok) ++s.failed_steps;
+        }
+      } catch (const std::invalid_argument& refusal) {
+        throw scenario_settings_error("filters." + filters[i].name, refusal,
+                                      "the scenario's gyro, noise sigmas and this filter's settings, at t = " +
+                                          number_text(t1) + " s");
       }
       const GpsInsSample sample = sample_of(t1, st.x_true, runners[i].x(), runners[i].P());
       if (options.on_sample) options.on_sample(static_cast<int>(i), sample);

@@ -51,7 +51,7 @@ void read_relative(const YamlMap& top, GpsInsScenario& s) {
   }
   if (s.initial_position.cross(s.initial_velocity_used()).norm() <= 1e-12 * s.initial_position.norm())
     r.fail("initial_velocity", "is parallel to initial_position: no fly-around plane");
-  s.accel_sigma = r.nonnegative("accel_perturbation_sigma", s.accel_sigma);
+  s.accel_sigma = standard_deviation(r, "accel_perturbation_sigma", s.accel_sigma, 1.0, ZeroSigma::Allowed);
 }
 
 void read_attitude(const YamlMap& top, GpsInsScenario& s) {
@@ -73,7 +73,7 @@ void read_attitude(const YamlMap& top, GpsInsScenario& s) {
   if (Eigen::LLT<Eigen::Matrix3d>(s.inertia_true()).info() != Eigen::Success)
     a.fail_value("inertia_products_fraction", s.inertia_products_fraction,
                  "makes the true inertia not positive definite");
-  s.torque_sigma = a.nonnegative("torque_disturbance_sigma", s.torque_sigma);
+  s.torque_sigma = standard_deviation(a, "torque_disturbance_sigma", s.torque_sigma, 1.0, ZeroSigma::Allowed);
   if (a.has("control")) {
     const YamlMap c = a.map("control", {"law", "kp", "kd", "on"});
     if (c.has("law"))
@@ -88,11 +88,15 @@ void read_attitude(const YamlMap& top, GpsInsScenario& s) {
 void read_gyro(const YamlMap& top, GpsInsScenario& s) {
   if (!top.has("gyro")) return;
   const YamlMap g = top.map("gyro", {"noise_deg_h", "bias_initial_deg_h", "bias_rw_deg_h_sqrt_h"});
-  s.gyro_noise_sigma = g.nonnegative("noise_deg_h", s.gyro_noise_sigma / kDegreesPerHour) * kDegreesPerHour;
+  s.gyro_noise_sigma =
+      standard_deviation(g, "noise_deg_h", s.gyro_noise_sigma / kDegreesPerHour, kDegreesPerHour, ZeroSigma::Refused) *
+      kDegreesPerHour;
   s.gyro_bias_initial = scenario_vector3(g, "bias_initial_deg_h", s.gyro_bias_initial / kDegreesPerHour, kDegreesPerHour);
   // (°/h)/√h → rad/s^1.5: ÷ 60 (√3600 s)
   s.gyro_bias_walk_sigma =
-      g.nonnegative("bias_rw_deg_h_sqrt_h", s.gyro_bias_walk_sigma * 60 / kDegreesPerHour) * kDegreesPerHour / 60;
+      standard_deviation(g, "bias_rw_deg_h_sqrt_h", s.gyro_bias_walk_sigma * 60 / kDegreesPerHour,
+                         kDegreesPerHour / 60, ZeroSigma::Allowed) *
+      kDegreesPerHour / 60;
 }
 
 void read_gps(const YamlMap& top, GpsInsScenario& s) {
@@ -111,8 +115,8 @@ void read_gps(const YamlMap& top, GpsInsScenario& s) {
   }
   s.satellite_distance = g.positive("distance", s.satellite_distance);
   s.carrier_frequency = g.positive("frequency", s.carrier_frequency);
-  s.pseudorange_sigma = g.positive("pseudorange_sigma", s.pseudorange_sigma);
-  s.phase_sigma = g.positive("phase_sigma", s.phase_sigma);
+  s.pseudorange_sigma = standard_deviation(g, "pseudorange_sigma", s.pseudorange_sigma, 1.0, ZeroSigma::Refused);
+  s.phase_sigma = standard_deviation(g, "phase_sigma", s.phase_sigma, 1.0, ZeroSigma::Refused);
   if (g.has("phase_sigma_unit") && g.choice("phase_sigma_unit", {"cycles", "m"}) == "m")
     s.phase_sigma *= s.carrier_frequency / models::kSpeedOfLight;
   if (g.has("phase_mode") && g.choice("phase_mode", {"single_difference", "double_difference"}) == "double_difference")
@@ -130,11 +134,14 @@ void read_estimate(const YamlMap& top, GpsInsInitialError& e) {
   const YamlMap m = top.map("estimate", {"initial_error_sigma", "sample_initial_error"});
   if (m.has("initial_error_sigma")) {
     const YamlMap i = m.map("initial_error_sigma", {"position", "velocity", "attitude_deg", "rate_deg_s", "bias_deg_h"});
-    e.position = i.positive("position", e.position);
-    e.velocity = i.positive("velocity", e.velocity);
-    e.attitude = i.positive("attitude_deg", e.attitude / kRadiansPerDegree) * kRadiansPerDegree;
-    e.rate = i.positive("rate_deg_s", e.rate / kRadiansPerDegree) * kRadiansPerDegree;
-    e.bias = i.positive("bias_deg_h", e.bias / kDegreesPerHour) * kDegreesPerHour;
+    const auto sigma = [&i](const char* key, double fallback, double to_si) {
+      return standard_deviation(i, key, fallback, to_si, ZeroSigma::Refused);
+    };
+    e.position = sigma("position", e.position, 1.0);
+    e.velocity = sigma("velocity", e.velocity, 1.0);
+    e.attitude = sigma("attitude_deg", e.attitude / kRadiansPerDegree, kRadiansPerDegree) * kRadiansPerDegree;
+    e.rate = sigma("rate_deg_s", e.rate / kRadiansPerDegree, kRadiansPerDegree) * kRadiansPerDegree;
+    e.bias = sigma("bias_deg_h", e.bias / kDegreesPerHour, kDegreesPerHour) * kDegreesPerHour;
   }
   e.sample = m.boolean("sample_initial_error", e.sample);
 }

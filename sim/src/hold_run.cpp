@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hinf/common/number_text.hpp"
 #include "hinf/models/tumbling_hold.hpp"
 #include "hinf/runtime/lti_controller.hpp"
 #include "hinf/sim/hold_truth.hpp"
@@ -99,6 +100,20 @@ class PulseCounter {
   std::optional<long> shortest_;
 };
 
+// A finite truth whose metrics overflow (errors of 1e200 m squared in an RMS) cannot be
+// summarised: SimulationError naming the metric, never a summary with inf in it.
+void require_finite_metrics(const HoldMetrics& m) {
+  const std::pair<const char*, double> values[] = {{"position_rms_m", m.position_rms_m},
+                                                   {"position_max_m", m.position_max_m},
+                                                   {"velocity_rms_mps", m.velocity_rms_mps},
+                                                   {"delta_v_mps", m.delta_v_mps}};
+  for (const auto& [name, value] : values)
+    if (!std::isfinite(value))
+      throw SimulationError(std::string("tumbling_hold: the metric ") + name + " is " + number_text(value) +
+                            ": the run's errors or forces are beyond floating-point range (check the scenario's "
+                            "servicer_mass, hold_point, initial_offset and initial_velocity)");
+}
+
 HoldMetrics window_metrics(const HoldScenario& s, const HoldTrajectory& tr) {
   HoldMetrics m;
   Eigen::Vector3d sum_e2 = Eigen::Vector3d::Zero(), sum_v2 = Eigen::Vector3d::Zero();
@@ -176,6 +191,7 @@ HoldRunResult simulate_hold_run(const HoldSetup& setup, std::uint64_t run_seed, 
   r.metrics.pulse_count = pulses.count();
   if (pulses.shortest()) r.metrics.min_pulse_s = static_cast<double>(*pulses.shortest()) * h;
   r.metrics.saturation_fraction = static_cast<double>(saturated) / static_cast<double>(steps - 1);
+  require_finite_metrics(r.metrics);
   if (keep_trajectory) r.trajectory = std::move(tr);
   return r;
 }

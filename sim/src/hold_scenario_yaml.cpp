@@ -90,6 +90,18 @@ void read_control(const YamlMap& top, HoldScenario& s) {
   else s.controller.synthesize_path = resolve_scenario_file(c, "synthesize", s.path);
 }
 
+// The PWM modulator's own rules (runtime/pulse_modulator.hpp) checked here, where they can name
+// the scenario's keys: a started pulse fits in a period, and a period is at most 1e12 ticks.
+void check_pwm_period(const YamlMap& where, const HoldScenario& s) {
+  if (s.modulator != ModulatorKind::Pwm) return;
+  if (!(s.thrusters.min_on_time <= s.pwm.period))
+    where.reader().fail(where.node(), "thrusters.min_on_time = " + number_text(s.thrusters.min_on_time) +
+                                          ": must be at most the PWM period " + number_text(s.pwm.period) + " s");
+  if (!(s.pwm.period / s.integration_step <= 1e12))
+    where.reader().fail(where.node(), "modulator.period = " + number_text(s.pwm.period) +
+                                          ": at most 1e12 integration steps of " + number_text(s.integration_step) + " s");
+}
+
 void read_actuators(const YamlMap& top, HoldScenario& s) {
   if (top.has("thrusters")) {
     const YamlMap t = top.map("thrusters", {"force", "min_on_time"});
@@ -99,7 +111,12 @@ void read_actuators(const YamlMap& top, HoldScenario& s) {
   s.pwm.thruster = s.pwpf.thruster = s.thrusters;
   s.pwm.resolution = s.integration_step;
   s.pwm.carry_limit = s.thrusters.force * s.thrusters.min_on_time;
-  if (!top.has("modulator")) return;
+  if (!std::isfinite(s.pwm.carry_limit))  // the impulse of one shortest pulse
+    top.fail_value("thrusters", s.pwm.carry_limit, "force x min_on_time (the shortest pulse's impulse) must be finite");
+  if (!top.has("modulator")) {
+    check_pwm_period(top, s);
+    return;
+  }
   const YamlMap m = top.map("modulator", {"type", "period", "carry_remainder", "Km", "tau", "u_on", "u_off"});
   m.required("type", "ideal, pwm or pwpf");
   const std::string type = m.choice("type", {"ideal", "pwm", "pwpf"});
@@ -114,6 +131,7 @@ void read_actuators(const YamlMap& top, HoldScenario& s) {
     if (!whole_multiple(s.pwm.period, s.control_sample_time))
       m.fail_value("period", s.pwm.period,
                    "must be a whole multiple of control_sample_time " + number_text(s.control_sample_time));
+    check_pwm_period(m, s);
   } else if (s.modulator == ModulatorKind::Pwpf) {
     s.pwpf.Km = m.positive("Km", s.pwpf.Km);
     s.pwpf.tau = m.positive("tau", s.pwpf.tau);

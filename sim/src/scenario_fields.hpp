@@ -20,6 +20,29 @@ inline Eigen::Vector3d scenario_vector3(const YamlMap& m, const char* key, const
   return v * scale;
 }
 
+// The range of a standard deviation in SI: its square, the variance the filters' covariances
+// and the noise generators use, is then a finite normal double (1e-300 … 1e300), so no
+// covariance built from it overflows, or underflows to a singular matrix that a filter would
+// refuse with a message naming its own class instead of the scenario's key.
+constexpr double kMinStandardDeviation = 1e-150, kMaxStandardDeviation = 1e150;
+
+enum class ZeroSigma { Refused, Allowed };  // Allowed: 0 means no such noise
+
+// A standard deviation under `key`, in the file's unit (`fallback` when absent): finite,
+// positive (or 0 where allowed), and times `to_si` within [kMinStandardDeviation,
+// kMaxStandardDeviation]; else Error(InvalidInput) naming the key and value.
+inline double standard_deviation(const YamlMap& m, const char* key, double fallback, double to_si, ZeroSigma zero) {
+  if (!m.has(key)) return fallback;
+  const double v = zero == ZeroSigma::Allowed ? m.nonnegative(key) : m.positive(key);
+  const double si = v * to_si;
+  const bool no_noise = zero == ZeroSigma::Allowed && v == 0;
+  if (!(no_noise || (si >= kMinStandardDeviation && si <= kMaxStandardDeviation)))
+    m.fail_value(key, v,
+                 "a standard deviation must lie in [" + number_text(kMinStandardDeviation) + ", " +
+                     number_text(kMaxStandardDeviation) + "] in SI units: its square is the variance the filters use");
+  return v;
+}
+
 // A name that labels columns and plots: a-z, 0-9 and _ only, not empty; `what` says what it
 // names ("a filter's name").
 inline void require_column_name(const YamlMap& m, const std::string& name, const char* what) {

@@ -23,4 +23,13 @@ void require_finite_truth(const std::string& family, long sample, double t, cons
   throw SimulationError(os.str());
 }
 
+hinf::Error scenario_settings_error(const std::string& key, const std::invalid_argument& refusal,
+                                    const std::string& origin) {
+  std::string what = refusal.what();
+  // drop the leading "Class: " or "hinf::runtime::Class: " (a word with :: but no space)
+  const std::size_t colon = what.find(": ");
+  if (colon != std::string::npos && what.find(' ') > colon) what.erase(0, colon + 2);
+  return hinf::Error(hinf::ErrorCode::InvalidInput, key + ": " + what + " (built from " + origin + ")");
+}
+
 }  // namespace hinf::sim

@@ -234,6 +234,14 @@ TEST(GpsInsInvalid, Exit2NamesKeyWritesNothing) {
        "metrics.table1_products_fractions: 0.9 at index 2 makes the true inertia not positive definite"},
       {"table1_products_fractions: [0, 0.1, 0.3]", "table1_products_fractions: [0, 0.3, 0.1]",
        "metrics.table1_products_fractions: must be increasing fractions in [0, 1), got 0.1 at index 2"},
+      // a variance that underflows or overflows: the scenario's key, never a filter's class
+      // (was "Ekf: R is not positive definite (Cholesky failed)")
+      {"noise_deg_h: 0.05", "noise_deg_h: 4.9e-324", "gyro.noise_deg_h = 5e-324: a standard deviation must lie in"},
+      {"pseudorange_sigma: 1.0", "pseudorange_sigma: 1e200", "gps.pseudorange_sigma = 1e200"},
+      {"initial_error_sigma: {position: 10", "initial_error_sigma: {position: 1e-200", "initial_error_sigma.position"},
+      // a refusal at run time, by the filter's key (was "Rekf: Q has a non-finite entry")
+      {"inertia_uncertainty_fraction: 0.03}", "inertia_uncertainty_fraction: 1e200}",
+       "filters.rekf: Q has a non-finite entry (built from"},
   };
   for (const auto& c : cases) {
     const fs::path cfg = edited_scenario("bad", {{c.from, c.to}});

@@ -160,7 +160,12 @@ TEST(HoldInvalid, Exit2NamesKeyWritesNothing) {
                {"controller: {synthesize: ../tumbling-hold.yaml}", "controller: {file: missing.yaml}",
                 "controller.file: file '.*missing.yaml' does not exist"},
                {"feedforward: {rate_deg_s: [0, 0, 2]}", "feedforward: {from: target_rate, rate_deg_s: [0, 0, 2]}",
-                "feedforward.rate_deg_s: not with from: target_rate"}};
+                "feedforward.rate_deg_s: not with from: target_rate"},
+               // the scenario's key, never the runtime's class (was "hinf::runtime::PwmModulator: ...")
+               {"min_on_time: 0.04", "min_on_time: 1e200", "thrusters.min_on_time = 1e200: must be at most the PWM period 1 s"},
+               // was exit 4, "internal error: summary.json: refusing to write a non-finite number"
+               {"feedforward: {rate_deg_s: [0, 0, 2]}", "feedforward: {rate_deg_s: [1e200, 0, 2]}",
+                "feedforward: the equilibrium force U\\* .* is not finite"}};
   const std::string text = slurp(fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "tumbling-hold-pwm.yaml");
   int i = 0;
   for (const auto& c : cases) {

@@ -2,6 +2,7 @@
 #include "config/sections.hpp"
 #include "config/sha256.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/common/number_text.hpp"
 #include "hinf/models/tumbling_hold.hpp"
 #include "hinf/synth/controller_config.hpp"
 
@@ -66,6 +67,19 @@ Eigen::Vector3d degrees_vector(const YamlMap& c, const char* key, const Eigen::V
   return v * hinf::models::kRadiansPerDegree;
 }
 
+// Values each finite that the model turns into a non-finite matrix (servicer_mass 4.9e-324:
+// B2 = 1/m) are refused naming the model's values, not the internal matrix alone.
+void require_finite_model(const YamlMap& c, const hinf::GeneralisedPlant& P, const hinf::models::TumblingHoldModel& m) {
+  const std::pair<const char*, const Eigen::MatrixXd*> matrices[] = {
+      {"A", &P.A}, {"B1", &P.B1}, {"B2", &P.B2}, {"C1", &P.C1}, {"C2", &P.C2}, {"D11", &P.D11}, {"D12", &P.D12}, {"D21", &P.D21}};
+  for (const auto& [name, M] : matrices)
+    if (!M->allFinite())
+      c.fail("model", std::string("tumbling_hold builds a non-finite ") + name + " (docs/maths.md (159)) from servicer_mass = " +
+                          number_text(m.servicer_mass) + ", orbit_rate = " + number_text(m.orbit_rate) +
+                          ", disturbance_sigma = " + number_text(m.disturbance_sigma) + ", measurement_sigma = " +
+                          number_text(m.measurement_sigma) + " and the weights: their products leave floating-point range");
+}
+
 // The physical model `model: tumbling_hold` (docs/maths.md §27, (157)–(160)) with its defaults.
 hinf::GeneralisedPlant read_tumbling_hold(const YamlMap& c, ControllerDesign& design) {
   c.choice("model", {"tumbling_hold"});
@@ -99,6 +113,7 @@ hinf::GeneralisedPlant read_tumbling_hold(const YamlMap& c, ControllerDesign& de
     u.gravity_gradient = r.boolean("gravity_gradient", true);
     design.robust = hinf::models::tumbling_hold_uncertainty(m, u, P.n());
   }
+  require_finite_model(c, P, m);
   return P;
 }
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "hinf/common/error.hpp"
+
 namespace hinf::sim {
 
 // A run that cannot continue (non-finite truth, thrust from a diverged estimate): exit 4.
@@ -25,5 +27,12 @@ struct NamedPart {
 // and NaN rows.
 void require_finite_truth(const std::string& family, long sample, double t, const Eigen::Ref<const Eigen::VectorXd>& x,
                           std::initializer_list<NamedPart> parts);
+
+// A runtime filter's refusal (std::invalid_argument, its message led by its class, "Ekf: Q has
+// a non-finite entry") of the settings a scenario gave it, as Error(InvalidInput) led by the
+// scenario's key instead ("filters.ekf: Q has a non-finite entry; ..."): `origin` says which
+// scenario values it was built from.
+hinf::Error scenario_settings_error(const std::string& key, const std::invalid_argument& refusal,
+                                    const std::string& origin);
 
 }  // namespace hinf::sim
