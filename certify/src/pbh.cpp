@@ -2,22 +2,32 @@
 #include "hinf/certify/pbh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace hinf::certify {
 
-std::optional<UnseenMode> unseen_unstable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X, bool discrete) {
+std::optional<UnseenMode> unseen_unstable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X, bool discrete,
+                                               double disk_radius) {
   const Eigen::Index n = A.rows();
+  const double u = std::numeric_limits<double>::epsilon() / 2;
   Eigen::ComplexEigenSolver<Eigen::MatrixXd> es(A, false);
-  Eigen::MatrixXd AX(n + X.rows(), n);
-  AX << A, X;
-  const double scale = std::max(1.0, AX.norm());
+  const double norm_X = X.norm();
+  const Eigen::MatrixXcd Xs = X.cast<std::complex<double>>() / (norm_X > 0 ? norm_X : 1.0);
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
     const std::complex<double> lambda = es.eigenvalues()(i);
-    if (discrete ? std::abs(lambda) < 1 : lambda.real() < 0) continue;
+    const bool stable = discrete ? std::abs(lambda) < 1 : lambda.real() < 0;
+    if (stable && std::abs(lambda) < disk_radius) continue;
+    const Eigen::MatrixXcd shifted = A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n);
+    // the shifted block at unit norm, but never magnified beyond 1/√u of the data's scale: where
+    // A − λI is that close to 0 (A ≈ λI) its entries are mostly rounding and X decides
+    const double data = A.norm() + std::abs(lambda);
+    const double block = std::max({shifted.norm(), std::sqrt(u) * data, std::numeric_limits<double>::min()});
     Eigen::MatrixXcd pbh(n + X.rows(), n);
-    pbh << A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n), X.cast<std::complex<double>>();
+    pbh << shifted / block, Xs;
+    const double tolerance = kPbhRelativeTolerance + kPbhRoundingFactor * u * data / block;
     const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(pbh, Eigen::ComputeFullV);
-    if (svd.singularValues()(n - 1) <= kPbhRelativeTolerance * scale) return UnseenMode{lambda, svd.matrixV().col(n - 1)};
+    if (svd.singularValues()(n - 1) <= tolerance) return UnseenMode{lambda, svd.matrixV().col(n - 1)};
   }
   return std::nullopt;
 }

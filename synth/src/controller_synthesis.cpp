@@ -2,6 +2,7 @@
 #include "hinf/synth/controller_synthesis.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <complex>
 #include <optional>
@@ -54,23 +55,6 @@ void check_dimensions(const hinf::GeneralisedPlant& P) {
     throw Error(ErrorCode::InvalidInput, "controller.sample_time: must be positive in discrete time", "sample_time");
 }
 
-// No controller stabilises the loop unless (A, B2) is stabilisable and (A, C2) detectable
-// (checked on the equilibrated plant): Error(Infeasible) naming the mode.
-void require_stabilisable_detectable(const hinf::GeneralisedPlant& P) {
-  const bool discrete = P.time == hinf::TimeDomain::Discrete;
-  const char* region = discrete ? "|λ| ≥ 1" : "Re λ ≥ 0";
-  const auto text = [](std::complex<double> z) {
-    return fmt(z.real()) + (z.imag() == 0 ? "" : (z.imag() > 0 ? " + " : " - ") + fmt(std::abs(z.imag())) + "i");
-  };
-  if (const auto m = certify::unseen_unstable_mode(P.A.transpose(), P.B2.transpose(), discrete))
-    throw Error(ErrorCode::Infeasible, "infeasible: (A, B2) is not stabilisable: the mode λ = " + text(m->lambda) + " of A (" +
-                                           region + ") is not reached by the control u, so no controller makes the "
-                                           "closed loop stable (PBH test, docs/maths.md (126))");
-  if (const auto m = certify::unseen_unstable_mode(P.A, P.C2, discrete))
-    throw Error(ErrorCode::Infeasible, "infeasible: (A, C2) is not detectable: the mode λ = " + text(m->lambda) + " of A (" +
-                                           region + ") is not seen in the measurement y, so no controller makes the "
-                                           "closed loop stable (PBH test, docs/maths.md (126))");
-}
 
 
 
@@ -92,6 +76,36 @@ ScaledControllerLmi scaled_controller_lmi(const hinf::GeneralisedPlant& P, const
   return s;
 }
 
+// No controller makes the loop stable (with its poles in the disk |λ| < r, if one is asked)
+// unless (A, B2) is stabilisable and (A, C2) detectable in that region — and when they are,
+// (149)/(150) (with (153)) is feasible for a large enough γ. Checked on the equilibrated plant
+// (time unit 1/ω) and confirmed on the user's (a verdict of one coordinate system's rounding
+// alone is none), reported in the user's units: Error(Infeasible) naming the mode.
+void require_stabilisable_detectable(const hinf::GeneralisedPlant& user, const ControllerDesign& user_design,
+                                     const ScaledControllerLmi& S) {
+  const hinf::GeneralisedPlant& P = S.plant;
+  const double user_disk = user_design.pole_disk_radius.value_or(std::numeric_limits<double>::infinity());
+  const bool discrete = P.time == hinf::TimeDomain::Discrete;
+  const double disk = S.design.pole_disk_radius.value_or(std::numeric_limits<double>::infinity());
+  const double omega = S.scaling.time;
+  const std::string region = std::string(discrete ? "|λ| ≥ 1" : "Re λ ≥ 0") +
+                             (S.design.pole_disk_radius ? " or outside the pole disk |λ| < " + fmt(disk * omega) : "");
+  const std::string goal = S.design.pole_disk_radius ? "stable with its poles in the disk" : "stable";
+  const auto text = [omega](std::complex<double> z) {
+    z *= omega;
+    return fmt(z.real()) + (z.imag() == 0 ? "" : (z.imag() > 0 ? " + " : " - ") + fmt(std::abs(z.imag())) + "i");
+  };
+  if (const auto m = certify::unseen_unstable_mode(P.A.transpose(), P.B2.transpose(), discrete, disk);
+      m && certify::unseen_unstable_mode(user.A.transpose(), user.B2.transpose(), discrete, user_disk))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, B2) is not stabilisable: the mode λ = " + text(m->lambda) + " of A (" +
+                                           region + ") is not reached by the control u, so no controller makes the "
+                                           "closed loop " + goal + " (PBH test, docs/maths.md (126))");
+  if (const auto m = certify::unseen_unstable_mode(P.A, P.C2, discrete, disk);
+      m && certify::unseen_unstable_mode(user.A, user.C2, discrete, user_disk))
+    throw Error(ErrorCode::Infeasible, "infeasible: (A, C2) is not detectable: the mode λ = " + text(m->lambda) + " of A (" +
+                                           region + ") is not seen in the measurement y, so no controller makes the "
+                                           "closed loop " + goal + " (PBH test, docs/maths.md (126))");
+}
 }  // namespace
 
 std::string controller_sdpa(const hinf::GeneralisedPlant& P, const ControllerDesign& design, const std::string& comment) {
@@ -109,12 +123,23 @@ namespace {
 
 // Minimises γ over an LMI built by build_controller_lmi: the solution, or Error with the
 // solver's verdict (`what` names the LMI).
+// Whether the LMI is known to be feasible (for a large enough γ): then a phase I that ends
+// "infeasible" is a numerical failure (exit 4), never a certificate (exit 3).
+enum class KnownFeasible { No, Yes };
+
 sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, const IterationObserver& observer,
-                             const std::string& what, double relative_gap_tol = 0) {
+                             const std::string& what, double relative_gap_tol = 0,
+                             KnownFeasible known = KnownFeasible::No) {
   sdp::Options options = solver_options(settings);
   options.relative_gap_tol = std::max(options.relative_gap_tol, relative_gap_tol);
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), options, Eigen::VectorXd(),
                                                  staged(observer, SolveStage::Controller));
+  if (sol.status == sdp::Status::Infeasible && known == KnownFeasible::Yes)
+    throw Error(ErrorCode::NumericalFailure,
+                what + ": phase I stopped short of a strictly feasible point (" + sol.detail +
+                    "), yet the PBH pre-flight found (A, B2) stabilisable and (A, C2) detectable (in the pole disk, if one is "
+                    "asked), so the LMI is feasible for a large enough gamma: a numerical failure (the plant's scales far "
+                    "apart), no proof that no controller exists");
   if (sol.status != sdp::Status::Solved)
     throw Error(error_code_for(sol.status),
                 what + ": " + std::string(sdp::status_message(sol.status)) + (sol.detail.empty() ? "" : ": " + sol.detail));
@@ -291,10 +316,15 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   // solved on the equilibrated plant (docs/maths.md (154)), mapped back exactly
   const ScaledControllerLmi S = scaled_controller_lmi(P, design);
   const SynthesisContext x{P, S, design, settings, observer};
-  require_stabilisable_detectable(S.plant);
+  require_stabilisable_detectable(P, design, S);
   const ControllerLmi& C = S.lmi;
   require_memory(C.lmi, settings, "the controller LMI");
-  const sdp::Solution sol = minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))");
+  // (149)/(150) (and (153)) is feasible for a large enough γ once the pre-flight above passed
+  // (the full-order design, Chilali and Gahinet's common Lyapunov matrix for the intersection
+  // of the two regions): a phase I that ends "infeasible" is a numerical failure (on
+  // A = [[0, 1], [0, 1e4]] it once claimed "no strictly feasible point", exit 3).
+  const sdp::Solution sol =
+      minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))", 0, KnownFeasible::Yes);
   ControllerSynthesisResult r;
   r.newton_iterations = sol.newton_total;
   r.time_s = sol.elapsed_s;

@@ -32,10 +32,15 @@ std::string vector_text(const Eigen::VectorXcd& v) {
 // The direction v (‖v‖ = 1, largest entry real and positive) of an undetectable mode λ
 // (|λ| ≥ 1, (A − λI)v ≈ 0, Cv ≈ 0), if any: the PBH test of (126) at each eigenvalue of the
 // scaled plant; v and its residuals are reported in the user's state coordinates
-// (x = diag(state_scale) x̃, docs/maths.md §4.4).
+// (x = diag(state_scale) x̃, docs/maths.md §4.4). The verdict must hold in the user's
+// coordinates too: a plant sampled at 1e-10 s has, scaled, a subdiagonal below rounding that
+// deflates a mode at |λ| = 1 − 1e-11 to λ = 1 exactly, and was called undetectable.
 void require_detectable(const Plant& plant, const VectorXd& state_scale) {
   const std::optional<certify::UnseenMode> mode = certify::unseen_unstable_mode(plant.A, plant.C, /*discrete=*/true);
   if (!mode) return;
+  const MatrixXd A_user = state_scale.asDiagonal() * plant.A * state_scale.cwiseInverse().asDiagonal();
+  const MatrixXd C_user = plant.C * state_scale.cwiseInverse().asDiagonal();
+  if (!certify::unseen_unstable_mode(A_user, C_user, /*discrete=*/true)) return;
   const std::complex<double> lambda = mode->lambda;
   Eigen::VectorXcd v = state_scale.cast<std::complex<double>>().asDiagonal() * mode->direction;
   v.normalize();

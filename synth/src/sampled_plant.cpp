@@ -22,6 +22,9 @@ Plant sample_plant(const Plant& c, const SamplingSpec& spec) {
   const double T = spec.sample_time;
   if (!(T > 0) || !std::isfinite(T))
     throw Error::invalid_field("sample_time", " = " + number_text(T) + ": must be finite and > 0 (s)");
+  if (spec.method == models::Discretisation::ZeroOrderHold || spec.white_process_noise)
+    if (const std::string problem = models::held_input_problem(c.A, T); !problem.empty())
+      throw Error::invalid_field("sample_time", " = " + number_text(T) + ": " + problem);
   const models::SampledMatrices s = models::discretise(c.A, T, spec.method);
   Plant d = c;
   d.A = s.A;

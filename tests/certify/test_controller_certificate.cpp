@@ -2,6 +2,8 @@
 // (certify/pbh.hpp) on loops whose answers are known in closed form.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <cmath>
 #include <string>
 
@@ -126,6 +128,73 @@ TEST(Pbh, DiscreteUnseenModeAndItsDirection) {
   EXPECT_NEAR(std::abs(m->direction(0)), 1, 1e-12);
   EXPECT_NEAR(std::abs(m->direction(1)), 0, 1e-12);
   EXPECT_FALSE(hinf::certify::unseen_unstable_mode(A, (MatrixXd(1, 2) << 1, 0).finished(), true).has_value());
+}
+
+// Witness-based (issue 34): random plants with unstable modes and a state feedback K built
+// with them so that A + B K is stable — (A, B) is stabilisable by construction — in time
+// units stretched by 1 … 1e8 (A → sA, K → sK), state coordinates scaled by 1e-2 … 1e2 and the
+// control by 1e-4 … 1e4: the PBH test must never call one of their modes unreachable.
+TEST(Pbh, StabilisablePlantsAtEveryScaleHaveNoUnseenMode) {
+  std::mt19937_64 gen(34);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  const auto random = [&](Eigen::Index r, Eigen::Index c) {
+    MatrixXd M(r, c);
+    for (Eigen::Index i = 0; i < M.size(); ++i) M.data()[i] = uni(gen);
+    return M;
+  };
+  int unstable_plants = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const Eigen::Index n = 2 + trial % 5, m = 1 + trial % 2;
+    const MatrixXd Q = random(n, n) + 2.0 * MatrixXd::Identity(n, n);
+    Eigen::VectorXd poles(n);
+    for (Eigen::Index i = 0; i < n; ++i) poles(i) = -0.5 - 2.0 * (uni(gen) + 1.0);
+    const MatrixXd A_cl = Q * poles.asDiagonal() * Q.inverse();  // stable
+    const MatrixXd B = random(n, m), K = 3.0 * random(m, n);
+    const MatrixXd A = A_cl - B * K;  // A + B K = A_cl
+    if (A.eigenvalues().real().maxCoeff() < 0) continue;
+    ++unstable_plants;
+    for (const double s : {1.0, 1e2, 1e4, 1e6, 1e8}) {
+      Eigen::VectorXd t(n);
+      for (Eigen::Index i = 0; i < n; ++i) t(i) = std::pow(10.0, 2.0 * uni(gen));
+      const double c = std::pow(10.0, 4.0 * uni(gen));
+      const MatrixXd A_s = s * t.cwiseInverse().asDiagonal() * A * t.asDiagonal();
+      const MatrixXd B_s = t.cwiseInverse().asDiagonal() * B * c;
+      const MatrixXd K_s = s * K * t.asDiagonal() / c;  // the witness in these units
+      ASSERT_LT((A_s + B_s * K_s).eigenvalues().real().maxCoeff(), 0) << "witness, trial " << trial << ", s " << s;
+      const auto mode = hinf::certify::unseen_unstable_mode(A_s.transpose(), B_s.transpose(), /*discrete=*/false);
+      EXPECT_FALSE(mode.has_value()) << "trial " << trial << " (n " << n << ", m " << m << "), s " << s << ", c " << c
+                                     << ": λ = " << mode->lambda;
+    }
+  }
+  EXPECT_GE(unstable_plants, 30);
+}
+
+// The same plant as a mode that is unreachable by construction stays unreachable at every
+// scale: A = diag(a, −1), B = [0; 1] (the mode a > 0 along e₁ is unreachable).
+TEST(Pbh, AnUnreachableModeIsFoundAtEveryScale) {
+  for (const double s : {1e-8, 1.0, 1e4, 1e8, 1e150}) {
+    MatrixXd A = MatrixXd::Zero(2, 2);
+    A.diagonal() << 0.7 * s, -s;
+    const MatrixXd B = (MatrixXd(2, 1) << 0, 1e-3).finished();
+    const auto mode = hinf::certify::unseen_unstable_mode(A.transpose(), B.transpose(), false);
+    ASSERT_TRUE(mode.has_value()) << s;
+    EXPECT_NEAR(std::abs(mode->lambda - 0.7 * s) / s, 0, 1e-12);
+  }
+  // A = [[0, 1], [0, a]], B = [0; 1]: both modes reachable at every a (a = 1e5 was called
+  // unstabilisable when the tolerance was relative to max(1, ‖[A; B]‖))
+  for (const double a : {1.0, 1e4, 1e5, 1e8, 1e12}) {
+    const MatrixXd A = (MatrixXd(2, 2) << 0, 1, 0, a).finished();
+    const MatrixXd B = (MatrixXd(2, 1) << 0, 1).finished();
+    EXPECT_FALSE(hinf::certify::unseen_unstable_mode(A.transpose(), B.transpose(), false).has_value()) << a;
+  }
+  // position and damped velocity sampled at 1e-10 s: the integrator's mode λ = 1 exactly,
+  // A − I of size 1e-10. Measured position sees it (it was called undetectable), measured
+  // velocity does not.
+  const MatrixXd A_d = (MatrixXd(2, 2) << 1, 1e-10, 0, 1 - 1e-10).finished();
+  EXPECT_FALSE(hinf::certify::unseen_unstable_mode(A_d, (MatrixXd(1, 2) << 1, 0).finished(), true).has_value());
+  const auto unseen = hinf::certify::unseen_unstable_mode(A_d, (MatrixXd(1, 2) << 0, 1).finished(), true);
+  ASSERT_TRUE(unseen.has_value());
+  EXPECT_EQ(unseen->lambda, std::complex<double>(1.0, 0.0));
 }
 
 // In continuous time the region is Re λ ≥ 0: λ = 0.5 counts, λ = −3 does not.

@@ -17,6 +17,7 @@
 #include "hinf/certify/riccati_filter.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/runtime/lti_filter.hpp"
+#include "hinf/synth/config.hpp"
 #include "hinf/synth/hill_plant.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "example_plants.hpp"
@@ -293,6 +294,43 @@ TEST(Kalman, EachFilterWinsInItsOwnNorm) {
       EXPECT_NEAR(kf.certificate.h2_norm_nominal / std::sqrt(best), 1.0, 1e-8);
     }
   }
+}
+
+// Exit 3 only with a true certificate (issue 34): the two-mass plant (damped, every mode
+// strictly stable) sampled by ZOH at 1e-10 s has its modes at |λ| = 1 − 1e-11; in the
+// balanced coordinates a subdiagonal below rounding deflated one to λ = 1 exactly, called
+// undetectable. Whatever the synthesis makes of it now, it is not "infeasible".
+TEST(ObserverForm, AStableModeSampledAtTenPicosecondsIsNotCalledUndetectable) {
+  const std::string config =
+      "constants: {c: 0.2}\nparameters:\n  k: {nominal: 1, range: [0.95, 1.05]}\n"
+      "system:\n  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-1 - k, k, -c, 0], [k, -k, 0, -c]]\n"
+      "  B: [[0, 0], [0, 0], [1, 0], [0, 1]]\n  C: [[0, 1, 0, 0]]\n  D: [[0.1]]\n"
+      "  L: [[1, 0, 0, 0], [0, 1, 0, 0]]\n  sample_time: 1e-10\n  discretisation: zoh\n";
+  const hinf::synth::SynthConfig cfg = hinf::synth::parse_config(config, "t.yaml");
+  try {
+    hinf::synth::synthesize(cfg.plant, cfg.settings);
+  } catch (const hinf::Error& e) {
+    EXPECT_NE(e.code(), hinf::ErrorCode::Infeasible) << e.what();
+  }
+}
+
+// A zero-order hold beyond working accuracy is refused naming sample_time (at 1e300 s it gave
+// Γ = 0 and "the process-noise matrix B is zero", a false exit 3).
+TEST(ObserverForm, AZeroOrderHoldBeyondWorkingAccuracyIsRefused) {
+  const std::string config =
+      "system:\n  A: [[0, 1], [-2, -0.2]]\n  B: [[0], [1]]\n  C: [[1, 0]]\n  D: [[0.1]]\n  L: [[1, 0]]\n"
+      "  sample_time: 1e300\n";
+  try {
+    hinf::synth::parse_config(config, "t.yaml");
+    ADD_FAILURE() << "accepted";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("system.sample_time = 1e300: T ‖A‖ = "), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(hinf::synth::parse_config(
+      "system:\n  A: [[0, 1], [-2, -0.2]]\n  B: [[0], [1]]\n  C: [[1, 0]]\n  D: [[0.1]]\n  L: [[1, 0]]\n"
+      "  sample_time: 1e7\n",
+      "t.yaml"));
 }
 
 }  // namespace

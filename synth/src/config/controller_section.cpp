@@ -133,6 +133,8 @@ hinf::GeneralisedPlant read_controller_section(const YamlReader& reader, const Y
   if (model) {  // a continuous physical model, sampled for a discrete design
     P = read_tumbling_hold(c, design);
     if (discrete) {
+      if (const std::string problem = hinf::models::held_input_problem(P.A, sample_time); !problem.empty())
+        c.fail_value("sample_time", sample_time, problem);
       if (design.robust) design.robust->H = hinf::models::discretise(P.A, sample_time, hinf::models::Discretisation::ZeroOrderHold).Gamma * design.robust->H;
       P = hinf::models::sampled_plant(P, sample_time);
     }

@@ -12,7 +12,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 
 namespace hinf::models {
@@ -41,6 +43,26 @@ void held_input_transition(const Eigen::Matrix<double, N, N>& A_c, double T, Eig
   const Eigen::Matrix<double, kDoubled<N>, kDoubled<N>> expM = M.exp();
   A = expM.topLeftCorner(n, n);
   Gamma = expM.topRightCorner(n, n);
+}
+
+// The zero-order hold is computed to working accuracy while T ‖A_c‖ stays below this: the
+// exponential of [T A_c, T I; 0, 0] by scaling and squaring loses Γ's accuracy in proportion to
+// the squarings (measured on a damped two-mass plant, Γ = −A_c⁻¹ in the limit: exact to 1e-16
+// at T ‖A_c‖ = 2e8, wrong by 1e-6 at 2e10, 1e-4 at 2e12, 60 % at 2e16, and Γ = 0 from 2e18 —
+// "the process noise is zero"). A sample time that long beside the plant's fastest mode is
+// refused rather than sampled wrongly.
+constexpr double kMaxHeldInputStiffness = 1e8;
+
+// Why the zero-order hold of A_c at T would not be accurate (T ‖A_c‖ beyond
+// kMaxHeldInputStiffness), or "" if it is.
+inline std::string held_input_problem(const Eigen::MatrixXd& A_c, double T) {
+  const double stiffness = T * A_c.norm();
+  if (!(stiffness > kMaxHeldInputStiffness)) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", stiffness);
+  return "T ‖A‖ = " + std::string(text) + " is beyond 1e8, where the zero-order hold is no longer computed to "
+         "working accuracy (docs/maths.md §19): sample faster, use discretisation: euler or tustin, or give the "
+         "discrete plant";
 }
 
 struct SampledMatrices {
