@@ -46,7 +46,20 @@ HinfNorm continuous_hinf_norm(const StateSpace& G, double rel_tol) {
   d.B = std::sqrt(2 * alpha) * resolvent_B;
   d.C = std::sqrt(2 * alpha) * C_resolvent;
   d.D = G.D + G.C * resolvent_B;
-  HinfNorm h = discrete_hinf_norm(d, rel_tol);
+  HinfNorm h;
+  try {
+    h = discrete_hinf_norm(d, rel_tol);
+  } catch (const Error& e) {
+    // the poles were Hurwitz above: a bilinear image on or outside the unit circle is rounding
+    // (poles spread over too many decades for one α), a numerical failure, not an infinite norm
+    if (e.code() != ErrorCode::Infeasible) throw;
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "continuous-time H∞ norm: the poles are stable (spectral abscissa " << abscissa
+        << " < 0) but their bilinear images (α = " << alpha
+        << ") reach the unit circle in rounding: the poles span too many decades to be computed with";
+    throw Error(ErrorCode::NumericalFailure, msg.str());
+  }
   h.peak_frequency = alpha * std::tan(h.peak_frequency / 2);
   return h;
 }
