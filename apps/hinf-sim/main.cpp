@@ -13,16 +13,10 @@
 #include <optional>
 #include <thread>
 
-#include "hinf/common/atomic_file.hpp"
-#include "hinf/common/number_text.hpp"
-#include "hinf/sim/gains_source.hpp"
-#include "hinf/sim/monte_carlo.hpp"
-#include "hinf/sim/plots.hpp"
-#include "hinf/sim/report.hpp"
-#include "hinf/sim/run_directory.hpp"
-#include "hinf/sim/hold_scenario_yaml.hpp"
-#include "hinf/sim/scenario_yaml.hpp"
 #include "hinf/common/input_file.hpp"
+#include "hinf/sim/family.hpp"
+#include "hinf/sim/plots.hpp"
+#include "hinf/sim/simulation_error.hpp"
 #include "options.hpp"
 
 namespace {
@@ -66,68 +60,6 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
 }
 
-// --duration: a whole number of sample times; the steady-state window shrinks with it.
-void override_duration(hinf::sim::Scenario& s, std::optional<double> duration) {
-  if (!duration) return;
-  s.duration = hinf::sim::checked_duration(*duration, s.sample_time);
-  if (s.steady_state_start && *s.steady_state_start > s.duration) s.steady_state_start.reset();
-}
-
-// The scenario and the gains of its LTI filters (read or synthesised); the gains files
-// to write beside the run's outputs (file name, content). Throws hinf::Error.
-hinf::sim::RunSetup load_setup(const Options& o, hinf::sim::SummaryContext& context,
-                               std::vector<std::pair<std::string, std::string>>& gains_files) {
-  using namespace hinf::sim;
-  RunSetup setup;
-  setup.scenario = load_scenario(o.scenario_path);
-  Scenario& s = setup.scenario;
-  override_duration(s, o.duration);
-  for (const char* name : {"hinf", "published"}) {
-    const bool hinf = std::string(name) == "hinf";
-    const auto& src = hinf ? s.filters.hinf : s.filters.published;
-    if (!src) continue;
-    ObtainedGains g;
-    try {
-      g = obtain_gains(*src, hinf::sim_cli::status_log(o.verbose));
-    } catch (const hinf::Error& e) {  // name a synthesis as such; a gains file names itself
-      if (src->synthesize_path.empty()) throw;
-      throw hinf::Error(e.code(), std::string("synthesis: ") + e.what());
-    }
-    // The sim feeds y = Cartesian position (m = 3) and reads the whole state (l = 6).
-    if (g.gains.B_F.cols() != 3 || g.gains.C_F.rows() != 6)
-      throw hinf::Error(hinf::ErrorCode::InvalidInput,
-                        "filters." + std::string(name) + ": " + g.origin + ": B_F has " +
-                            std::to_string(g.gains.B_F.cols()) + " columns and C_F " +
-                            std::to_string(g.gains.C_F.rows()) +
-                            " rows; hinf-sim needs m = 3 (Cartesian position measured) and l = 6 (L = I6)");
-    if (o.verbose) std::cerr << "hinf-sim: " << name << ": " << g.origin << "\n";
-    (hinf ? setup.hinf : setup.published) = g.gains;
-    context.gains[name] = {g.origin, g.gamma};
-    gains_files.emplace_back(hinf ? "gains.yaml" : "published_gains.yaml", g.gains_yaml);
-  }
-  return setup;
-}
-
-// The run's files, written together (hinf::sim::write_run_directory), never over the gains
-// files or synthesis configs the scenario names. Throws hinf::Error or PlotError.
-void write_outputs(const Options& o, const hinf::sim::RunSetup& setup, const std::vector<hinf::sim::RunResult>& results,
-                   const hinf::sim::SummaryContext& context,
-                   const std::vector<std::pair<std::string, std::string>>& gains_files) {
-  using namespace hinf::sim;
-  const Trajectory& trajectory = *results.front().trajectory;
-  std::vector<std::pair<std::string, std::string>> files{{"trajectory.csv", format_trajectory_csv(trajectory)}};
-  files.insert(files.end(), gains_files.begin(), gains_files.end());
-  files.push_back({"runs.csv", format_runs_csv(results)});
-  files.push_back({"summary.json", format_summary_json(setup.scenario, results, context)});
-  std::vector<std::string> inputs;
-  for (const auto& src : {setup.scenario.filters.hinf, setup.scenario.filters.published})
-    if (src) inputs.push_back(src->gains_path.empty() ? src->synthesize_path : src->gains_path);
-  hinf::sim_cli::write_run_directory(o, files, inputs, setup.scenario.plots,
-                                     [&](const std::string& title, hinf::AtomicFileSet& outputs) {
-                                       write_plots(o.out_dir, trajectory, title, outputs);
-                                     });
-}
-
 int run(int argc, char** argv) {
   CLI::App app{"hinf-sim: nonlinear relative-navigation experiments comparing the H∞ filter, the paper's "
                "published gains, EKFs and the REKF (docs/experiments.md)"};
@@ -140,91 +72,31 @@ int run(int argc, char** argv) {
     return rc == 0 ? 0 : kExitInvalid;
   }
 
-  using namespace hinf::sim;
-  try {  // the scenario family: `scenario: tumbling_hold`, `gps_ins_relative`, `gyroless_attitude`, `manoeuvring_target`, or the Hill experiments
-    const std::string text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
-    const std::string family = scenario_family(text, o.scenario_path);
-    if (family == "tumbling_hold") return hinf::sim_cli::run_tumbling_hold(o, text);
-    if (family == "gps_ins_relative") return hinf::sim_cli::run_gps_ins(o, text);
-    if (family == "gyroless_attitude") return hinf::sim_cli::run_gyroless_attitude(o, text);
-    if (family == "manoeuvring_target") return hinf::sim_cli::run_manoeuvring_target(o, text);
-  } catch (const hinf::Error& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(e.code());
-  }
-  SummaryContext context;
-  context.scenario_path = o.scenario_path;
-  context.seed = o.seed;
-  std::vector<std::pair<std::string, std::string>> gains_files;  // file name, content
-  RunSetup setup;
-  try {
-    setup = load_setup(o, context, gains_files);
-  } catch (const hinf::Error& e) {  // scenario, gains file, synthesis config or synthesis
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return hinf::exit_code(e.code());
-  }
-
-  std::vector<RunResult> results;
-  try {
-    results = run_monte_carlo(setup, o.runs, o.seed, o.jobs, hinf::sim_cli::progress_bar(!o.quiet && o.runs > 1));
-  } catch (const std::invalid_argument& e) {  // runtime filters refusing their gains/settings
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return kExitInvalid;
-  } catch (const SimulationError& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return kExitNumerical;
-  }
-
-  try {
-    write_outputs(o, setup, results, context, gains_files);
-  } catch (const hinf::Error& e) {
-    std::cerr << "hinf-sim: error: " << e.what() << "\n";
-    return kExitInvalid;
-  } catch (const PlotError& e) {
-    std::cerr << "hinf-sim: error: plots: " << e.what() << "\n";
-    return kExitInvalid;
-  }
-  return 0;
-}
-
-}  // namespace
-
-namespace hinf::sim_cli {
-
-void write_run_directory(const Options& o, const std::vector<std::pair<std::string, std::string>>& files,
-                         const std::vector<std::string>& inputs, bool plots_enabled,
-                         const std::function<void(const std::string& title, hinf::AtomicFileSet& outputs)>& plots) {
-  std::vector<std::string> read = inputs;
-  read.push_back(o.scenario_path);
-  const std::string title = std::filesystem::path(o.scenario_path).stem().string();
-  hinf::sim::write_run_directory(o.out_dir, files, read,
-                                 o.no_plots || !plots_enabled
-                                     ? std::function<void(hinf::AtomicFileSet&)>()
-                                     : [&](hinf::AtomicFileSet& outputs) { plots(title, outputs); });
-}
-
-int run_stages(const std::function<void()>& load, const std::function<void()>& simulate,
-               const std::function<void()>& write) {
   const auto fail = [](const std::string& what, hinf::ErrorCode code) {
     std::cerr << "hinf-sim: error: " << what << "\n";
     return hinf::exit_code(code);
   };
-  try {
-    load();
-  } catch (const hinf::Error& e) {
+  hinf::sim::CampaignRequest request;
+  request.scenario_path = o.scenario_path;
+  request.runs = o.runs;
+  request.seed = o.seed;
+  request.jobs = o.jobs;
+  request.duration = o.duration;
+  request.log = hinf::sim_cli::status_log(o.verbose);
+  request.progress = hinf::sim_cli::progress_bar(!o.quiet && o.runs > 1);
+  hinf::sim::CampaignResult result;
+  try {  // the scenario read once; its family (sim/family.hpp) runs the campaign in memory
+    request.scenario_text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);
+    result = hinf::sim::simulate(request);
+  } catch (const hinf::Error& e) {  // scenario, gains, controller, synthesis: its own code
     return fail(e.what(), e.code());
-  }
-  try {
-    simulate();
-  } catch (const hinf::Error& e) {  // a scenario value a filter refuses, named by its key
-    return fail(e.what(), e.code());
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {  // a runtime filter refusing its settings
     return fail(e.what(), hinf::ErrorCode::InvalidInput);
-  } catch (const hinf::sim::SimulationError& e) {
+  } catch (const hinf::sim::SimulationError& e) {  // a run that cannot go on
     return fail(e.what(), hinf::ErrorCode::NumericalFailure);
   }
   try {
-    write();
+    hinf::sim::write_campaign(result, o.out_dir, o.scenario_path, !o.no_plots);
   } catch (const hinf::Error& e) {
     return fail(e.what(), hinf::ErrorCode::InvalidInput);
   } catch (const hinf::sim::PlotError& e) {
@@ -232,6 +104,10 @@ int run_stages(const std::function<void()>& load, const std::function<void()>& s
   }
   return 0;
 }
+
+}  // namespace
+
+namespace hinf::sim_cli {
 
 hinf::sim::StatusLog status_log(bool enabled) {
   if (!enabled) return nullptr;

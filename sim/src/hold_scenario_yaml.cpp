@@ -152,13 +152,6 @@ void read_metrics(const YamlMap& top, HoldScenario& s) {
 
 }  // namespace
 
-std::string scenario_family(const std::string& text, const std::string& source_name) {
-  const YamlReader reader(source_name);
-  const YAML::Node root = reader.load(text, "empty scenario; expected a map");
-  if (!root.IsMap() || !root["scenario"]) return "";
-  return reader.choice(root["scenario"], "scenario", {"tumbling_hold", "gps_ins_relative", "gyroless_attitude", "manoeuvring_target"});
-}
-
 HoldScenario parse_hold_scenario(const std::string& text, const std::string& source_name) {
   const YamlReader reader(source_name);
   const YAML::Node root = reader.load(text, "empty scenario; expected a map with scenario: tumbling_hold");

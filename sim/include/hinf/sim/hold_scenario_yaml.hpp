@@ -8,10 +8,6 @@
 
 namespace hinf::sim {
 
-// The value of a scenario file's top-level `scenario:` key ("" when absent: the Hill
-// family of scenario.hpp); Error(InvalidInput) if the text is not a YAML map.
-std::string scenario_family(const std::string& yaml_text, const std::string& source_name);
-
 HoldScenario parse_hold_scenario(const std::string& yaml_text, const std::string& source_name);
 
 }  // namespace hinf::sim

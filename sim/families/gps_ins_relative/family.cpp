@@ -1,0 +1,66 @@
+// `scenario: gps_ins_relative` (docs/experiments.md "Seed 003"): the Monte-Carlo runs of every
+// configured filter on each run's one measurement stream; trajectory.csv (run 0), runs.csv,
+// summary.json, the plots of Figs. 1–4 and, with metrics.table1_products_fractions, table1.csv
+// (one campaign per fraction, same seeds).
+#include <algorithm>
+
+#include "hinf/sim/gps_ins_report.hpp"
+#include "hinf/sim/gps_ins_run.hpp"
+#include "hinf/sim/gps_ins_scenario_yaml.hpp"
+#include "stream_family.hpp"
+
+namespace hinf::sim::families {
+namespace {
+
+using GpsIns = StreamFamily<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample>;
+using Campaign = GpsIns::Functions::Campaign;
+
+void shorten_gps_ins(GpsInsExperiment& e, double duration) {
+  e.scenario.duration = duration;
+  e.options.window_end = std::min(e.options.window_end, duration);
+  if (e.options.window_start >= e.options.window_end) e.options.window_start = e.options.window_end / 2;
+}
+
+std::vector<GpsInsFilterStatistics> run_gps_ins_once(const GpsInsExperiment& e, const GpsInsScenario& scenario,
+                                                     std::uint64_t seed,
+                                                     const std::function<void(int, const GpsInsSample&)>& on) {
+  GpsInsRunOptions options = e.options;
+  options.on_sample = on;
+  return run_gps_ins(scenario, e.filters, options, seed);
+}
+
+const GpsIns::Functions& functions();
+
+// table1.csv: one campaign per table-1 fraction, the scenario's own where the fraction is its own.
+void table1(const CampaignRequest& r, const GpsInsExperiment& e, const Campaign& own,
+            std::vector<std::pair<std::string, std::string>>& files) {
+  if (e.table1_fractions.empty()) return;
+  std::vector<Campaign> campaigns;
+  for (double p : e.table1_fractions) {
+    if (p == e.scenario.inertia_products_fraction) {
+      campaigns.push_back(own);
+      continue;
+    }
+    GpsInsScenario scenario = e.scenario;
+    scenario.inertia_products_fraction = p;
+    campaigns.push_back(stream_campaign(functions(), r, e, scenario, static_cast<GpsIns::Functions::Samples*>(nullptr)));
+  }
+  files.emplace_back("table1.csv", format_gps_ins_table1_csv(e, e.table1_fractions, campaigns));
+}
+
+const GpsIns::Functions& functions() {
+  static const GpsIns::Functions f{"gps_ins_relative",          parse_gps_ins_scenario,  shorten_gps_ins,
+                                   run_gps_ins_once,            format_gps_ins_trajectory_csv,
+                                   format_gps_ins_runs_csv,     format_gps_ins_summary_json,
+                                   write_gps_ins_plots,         table1};
+  return f;
+}
+
+}  // namespace
+
+const Family& gps_ins_relative() {
+  static const GpsIns family(functions());
+  return family;
+}
+
+}  // namespace hinf::sim::families

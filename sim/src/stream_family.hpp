@@ -1,0 +1,78 @@
+// The families whose every run feeds each of their filters one measurement stream and keeps
+// run 0's samples (gyroless_attitude, manoeuvring_target, gps_ins_relative): the campaign,
+// the three files and the plots are the same; a family gives its functions as a
+// StreamFunctions table (one line each) and, if it has more files, an `extra` hook.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "families.hpp"
+#include "hinf/sim/scenario.hpp"
+
+namespace hinf::sim::families {
+
+template <class Experiment, class Stats, class Sample>
+struct StreamFunctions {
+  using Campaign = std::vector<std::vector<Stats>>;  // [run][filter]
+  using Samples = std::vector<std::vector<Sample>>;  // [filter][sample] of run 0
+  using Scenario = decltype(Experiment::scenario);
+  const char* name;
+  Experiment (*parse)(const std::string& text, const std::string& path);
+  void (*shorten)(Experiment& e, double duration);  // --duration, already checked
+  // One run of every filter of e on `scenario` (e's own, or a variant), samples to on_sample.
+  std::vector<Stats> (*run)(const Experiment& e, const Scenario& scenario, std::uint64_t seed,
+                            const std::function<void(int, const Sample&)>& on_sample);
+  std::string (*trajectory_csv)(const Experiment& e, const Samples& samples);
+  std::string (*runs_csv)(const Experiment& e, const Campaign& stats, const std::vector<std::uint64_t>& seeds);
+  std::string (*summary_json)(const Experiment& e, const Campaign& stats, const std::string& path, std::uint64_t seed);
+  void (*plots)(const std::string& dir, const Experiment& e, const Samples& samples, const std::string& title,
+                AtomicFileSet& outputs);
+  // More files from more campaigns (gps_ins_relative's table1.csv), or nullptr.
+  void (*extra)(const CampaignRequest& r, const Experiment& e, const Campaign& stats,
+                std::vector<std::pair<std::string, std::string>>& files) = nullptr;
+};
+
+// The Monte-Carlo runs of e on `scenario` (run 0's samples into *samples when given).
+template <class Experiment, class Stats, class Sample>
+std::vector<std::vector<Stats>> stream_campaign(const StreamFunctions<Experiment, Stats, Sample>& f,
+                                                const CampaignRequest& r, const Experiment& e,
+                                                const decltype(Experiment::scenario)& scenario,
+                                                std::vector<std::vector<Sample>>* samples) {
+  return campaign<Stats, Sample>(r, samples, [&](std::uint64_t seed, const std::function<void(int, const Sample&)>& on) {
+    return f.run(e, scenario, seed, on);
+  });
+}
+
+template <class Experiment, class Stats, class Sample>
+class StreamFamily final : public Family {
+ public:
+  using Functions = StreamFunctions<Experiment, Stats, Sample>;
+  explicit constexpr StreamFamily(const Functions& f) : f_(f) {}
+  const char* name() const override { return f_.name; }
+  void parse(const std::string& text, const std::string& path) const override { f_.parse(text, path); }
+
+  CampaignResult simulate(const CampaignRequest& r) const override {
+    Experiment loaded = f_.parse(r.scenario_text, r.scenario_path);
+    if (r.duration) f_.shorten(loaded, checked_duration(*r.duration, loaded.scenario.sample_time));
+    const auto e = std::make_shared<const Experiment>(std::move(loaded));
+    const auto samples = std::make_shared<typename Functions::Samples>(e->filters.size());
+    const typename Functions::Campaign stats = stream_campaign(f_, r, *e, e->scenario, samples.get());
+    CampaignResult out;
+    out.files = {{"trajectory.csv", f_.trajectory_csv(*e, *samples)},
+                 {"runs.csv", f_.runs_csv(*e, stats, run_seeds(r.seed, r.runs))},
+                 {"summary.json", f_.summary_json(*e, stats, r.scenario_path, r.seed)}};
+    if (f_.extra) f_.extra(r, *e, stats, out.files);
+    out.plots = e->plots;
+    out.draw_plots = [e, samples, plots = f_.plots](const std::string& dir, const std::string& title,
+                                                    AtomicFileSet& outputs) { plots(dir, *e, *samples, title, outputs); };
+    return out;
+  }
+
+ private:
+  Functions f_;
+};
+
+}  // namespace hinf::sim::families
