@@ -130,7 +130,7 @@ enum class KnownFeasible { No, Yes };
 sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, const IterationObserver& observer,
                              const std::string& what, double relative_gap_tol = 0,
                              KnownFeasible known = KnownFeasible::No) {
-  sdp::Options options = solver_options(settings);
+  sdp::Options options = settings.solver;
   options.relative_gap_tol = std::max(options.relative_gap_tol, relative_gap_tol);
   const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), options, Eigen::VectorXd(),
                                                  staged(observer, SolveStage::Controller));
@@ -181,8 +181,8 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
     r.backoff = 0;
     if (b > 0) {
       const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
-      sdp::Options options = solver_options(x.settings);  // the margin need only be near its maximum
-      options.relative_gap_tol = std::max(x.settings.relative_gap_tol, kBackoffRelativeGap);
+      sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
+      options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
       const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
                                                     staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
@@ -238,7 +238,7 @@ void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
     } catch (const Error&) {
       full = sq;  // the end game of a singular problem: the bound below says whether it holds
     }
-    const sdp::DualBound bound = sdp::verified_bracket(Q.lmi, Q.lmi.cost_of(Q.g), full.x, x.settings.lmi_margin, {},
+    const sdp::DualBound bound = sdp::verified_bracket(Q.lmi, Q.lmi.cost_of(Q.g), full.x, x.settings.solver.lmi_margin, {},
                                                       full.centred_path);
     const std::string common = "robust channel (docs/maths.md (160a)): no controller makes ‖T_qp‖∞ < 1";
     if (bound.verified && bound.lower_bound >= 1)
@@ -261,7 +261,7 @@ void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
     scaled.H *= std::pow(10.0, log_d);
     scaled.E /= std::pow(10.0, log_d);
     const ControllerLmi M = build_robust_controller_lmi(x.S.plant, x.S.design, scaled);
-    sdp::Solution sm = sdp::minimize_linear(M.lmi, M.lmi.cost_of(M.g), solver_options(x.settings), Eigen::VectorXd(),
+    sdp::Solution sm = sdp::minimize_linear(M.lmi, M.lmi.cost_of(M.g), x.settings.solver, Eigen::VectorXd(),
                                             staged(x.observer, SolveStage::Controller));
     r.newton_iterations += sm.newton_total;
     r.time_s += sm.elapsed_s;

@@ -23,19 +23,6 @@ using Eigen::VectorXd;
 
 std::string fmt(double v) { return hinf::significant_text(v, 10); }
 
-// The solver's own options from the user's settings (as Ceres builds Minimizer::Options).
-sdp::Options solver_options(const Settings& settings) {
-  sdp::Options o;
-  o.lmi_margin = settings.lmi_margin;
-  o.relative_gap_tol = settings.relative_gap_tol;
-  o.barrier_growth = settings.barrier_growth;
-  o.feasibility_radius = settings.feasibility_radius;
-  o.max_newton_per_centering = settings.max_newton_per_centering;
-  o.max_iterations = settings.max_iterations;
-  o.time_limit_s = settings.time_limit_s;
-  return o;
-}
-
 // Refuses, before anything of its size is allocated, an SDP whose solve would need more
 // memory than solver.max_memory_mb (the solver's model, hinf/sdp/memory_model.hpp).
 double estimated_solve_mib(const lmi::LmiProblem& lmi) {
@@ -82,7 +69,7 @@ Error infeasibility_verdict(const lmi::LmiProblem& lmi, const sdp::Solution& sol
     return Error(ErrorCode::NumericalFailure, what + ": phase I ended infeasible without a final point");
   const VectorXd& last = sol.phase1_path.back();
   const std::vector<VectorXd> earlier(sol.phase1_path.begin(), sol.phase1_path.end() - 1);
-  const sdp::DualBound b = sdp::verified_infeasibility(lmi, last, settings.lmi_margin, basis_error, earlier);
+  const sdp::DualBound b = sdp::verified_infeasibility(lmi, last, settings.solver.lmi_margin, basis_error, earlier);
   if (b.verified && b.lower_bound > 0)
     return Error(ErrorCode::Infeasible,
                  what + ": infeasible, with a certificate: a verified dual point Z ⪰ 0 (tr Z = 1, tr(Z Mᵢ) = 0) "
@@ -111,7 +98,7 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
                               const Settings& settings, const IterationObserver& observer, const std::string& what,
                               const std::string& infeasible_hint, const std::string& failure_hint) {
   require_memory(lmi, settings, ("the " + what).c_str());
-  sdp::Options options = solver_options(settings);
+  sdp::Options options = settings.solver;
   const auto start = std::chrono::steady_clock::now();
   sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(),
                                            staged(observer, SolveStage::Synthesis));
@@ -121,7 +108,7 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
   while (sol.status == sdp::Status::NumericalError && options.feasibility_radius < kMaxRetryRadius) {
     options.feasibility_radius = std::min(options.feasibility_radius * kRetryRadiusFactor, kMaxRetryRadius);
     options.time_limit_s =
-        settings.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        settings.solver.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.time_limit_s <= 0) break;
     sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(), staged(observer, SolveStage::Synthesis));
   }
@@ -142,8 +129,8 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
 
 sdp::Solution solve_backoff(const lmi::LmiProblem& lmi, lmi::VarId margin, double gamma2_backoff, const Settings& settings,
                             const IterationObserver& observer) {
-  sdp::Options options = solver_options(settings);
-  options.relative_gap_tol = std::max(settings.relative_gap_tol, kBackoffRelativeGap);
+  sdp::Options options = settings.solver;
+  options.relative_gap_tol = std::max(settings.solver.relative_gap_tol, kBackoffRelativeGap);
   const sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(margin), options, VectorXd(),
                                                  staged(observer, SolveStage::Backoff));
   if (sol.status != sdp::Status::Solved || !(sol.objective < 0))
@@ -209,7 +196,7 @@ void certify_at_point(const Plant& plant, const MatrixXd& dense_lmi, double g, c
   res.gamma_squared = g;
   res.certificate = certify_checks(plant, res.filter, std::sqrt(g), settings, multipliers);
   if (res.certificate.schur_stable && !res.certificate.robust_feasible_at_gamma) {
-    res.gamma_squared = g * (1 + settings.relative_gap_tol);
+    res.gamma_squared = g * (1 + settings.solver.relative_gap_tol);
     res.certificate = certify_checks(plant, res.filter, std::sqrt(res.gamma_squared), settings, multipliers);
   }
   res.gamma = std::sqrt(res.gamma_squared);
@@ -256,7 +243,7 @@ std::string failed_checks(const Certificate& cert, double gamma) {
 // of the strict LMI (18) from a verified dual point, in the user's units (exact: ÷ 2^2k).
 void record_bracket(const lmi::LmiProblem& lmi, lmi::VarId g, const std::vector<lmi::SparseEntry>& basis_error, const sdp::Solution& sol,
                     const Settings& settings, double f, SolverInfo& info) {
-  const sdp::DualBound b = sdp::verified_bracket(lmi, lmi.cost_of(g), sol.x, settings.lmi_margin,
+  const sdp::DualBound b = sdp::verified_bracket(lmi, lmi.cost_of(g), sol.x, settings.solver.lmi_margin,
                                                  basis_error, sol.centred_path);
   info.gap_certified = b.verified && b.upper_verified;
   info.gap_detail = b.verified ? (b.upper_verified ? "" : "the solution point is not verifiably strictly feasible")
@@ -274,7 +261,7 @@ SolverInfo solver_info(const sdp::Solution& sol, const lmi::LmiProblem& lmi, con
   info.phase1_iterations = sol.newton_phase1;
   info.centerings = sol.centerings;
   info.scaling = sc.summary();
-  info.lmi_margin = settings.lmi_margin;
+  info.lmi_margin = settings.solver.lmi_margin;
   info.time_s = sol.elapsed_s;
   info.lmi_order = lmi.order();
   info.variables = lmi.num_params();

@@ -23,9 +23,6 @@ std::string fmt(double v);
 // ask for an absolute gap of 1e-13, below round-off.
 inline constexpr double kBackoffRelativeGap = 1e-3;
 
-// The solver's own options from the user's settings (as Ceres builds Minimizer::Options).
-sdp::Options solver_options(const Settings& settings);
-
 // The solver's memory model (sdp/memory_model.hpp) for this LMI, MiB: p variables plus
 // the two of phase I.
 double estimated_solve_mib(const lmi::LmiProblem& lmi);

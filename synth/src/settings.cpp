@@ -27,38 +27,38 @@ void require_finite(const char* field, double v) {
 }  // namespace
 
 void Settings::validate() const {
-  require_finite("lmi_margin", lmi_margin);
-  if (!(lmi_margin > 0)) fail("lmi_margin", number_text(lmi_margin), "must be > 0");
-  if (lmi_margin < kSolverTolerance)
-    fail("lmi_margin", number_text(lmi_margin),
+  require_finite("lmi_margin", solver.lmi_margin);
+  if (!(solver.lmi_margin > 0)) fail("lmi_margin", number_text(solver.lmi_margin), "must be > 0");
+  if (solver.lmi_margin < kSolverTolerance)
+    fail("lmi_margin", number_text(solver.lmi_margin),
          "below solver tolerance (must be >= " + number_text(kSolverTolerance) +
              ", or the strict LMI is not enforced)");
-  if (lmi_margin > 1e-2) fail("lmi_margin", number_text(lmi_margin), "must be <= 0.01");
+  if (solver.lmi_margin > 1e-2) fail("lmi_margin", number_text(solver.lmi_margin), "must be <= 0.01");
 
-  require_finite("relative_gap_tol", relative_gap_tol);
-  if (relative_gap_tol < 1e-12 || relative_gap_tol > 1e-2)
-    fail("relative_gap_tol", number_text(relative_gap_tol), "must be in [1e-12, 0.01]");
+  require_finite("relative_gap_tol", solver.relative_gap_tol);
+  if (solver.relative_gap_tol < 1e-12 || solver.relative_gap_tol > 1e-2)
+    fail("relative_gap_tol", number_text(solver.relative_gap_tol), "must be in [1e-12, 0.01]");
 
-  require_finite("barrier_growth", barrier_growth);
-  if (!(barrier_growth > 1.5)) fail("barrier_growth", number_text(barrier_growth), "must be > 1.5");
-  if (barrier_growth > 1e6) fail("barrier_growth", number_text(barrier_growth), "must be <= 1e6");
+  require_finite("barrier_growth", solver.barrier_growth);
+  if (!(solver.barrier_growth > 1.5)) fail("barrier_growth", number_text(solver.barrier_growth), "must be > 1.5");
+  if (solver.barrier_growth > 1e6) fail("barrier_growth", number_text(solver.barrier_growth), "must be <= 1e6");
 
-  require_finite("feasibility_radius", feasibility_radius);
-  if (feasibility_radius < 1 || feasibility_radius > 1e15)
-    fail("feasibility_radius", number_text(feasibility_radius), "must be in [1, 1e15]");
+  require_finite("feasibility_radius", solver.feasibility_radius);
+  if (solver.feasibility_radius < 1 || solver.feasibility_radius > 1e15)
+    fail("feasibility_radius", number_text(solver.feasibility_radius), "must be in [1, 1e15]");
 
-  if (max_newton_per_centering < 1 || max_newton_per_centering > 10000)
-    fail("max_newton_per_centering", std::to_string(max_newton_per_centering),
+  if (solver.max_newton_per_centering < 1 || solver.max_newton_per_centering > 10000)
+    fail("max_newton_per_centering", std::to_string(solver.max_newton_per_centering),
          "must be in [1, 10000]");
-  if (max_iterations < 1 || max_iterations > 1000000)
-    fail("max_iterations", std::to_string(max_iterations), "must be in [1, 1000000]");
+  if (solver.max_iterations < 1 || solver.max_iterations > 1000000)
+    fail("max_iterations", std::to_string(solver.max_iterations), "must be in [1, 1000000]");
 
   require_finite("max_memory_mb", max_memory_mb);
   if (max_memory_mb < 64 || max_memory_mb > 1048576)
     fail("max_memory_mb", number_text(max_memory_mb), "must be in [64, 1048576] (MiB)");
 
-  require_finite("time_limit_s", time_limit_s);
-  if (!(time_limit_s > 0)) fail("time_limit_s", number_text(time_limit_s), "must be > 0");
+  require_finite("time_limit_s", solver.time_limit_s);
+  if (!(solver.time_limit_s > 0)) fail("time_limit_s", number_text(solver.time_limit_s), "must be > 0");
 
   require_finite("gamma_backoff", gamma_backoff);
   if (gamma_backoff < 0 || gamma_backoff > 1)

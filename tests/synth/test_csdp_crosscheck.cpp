@@ -132,7 +132,7 @@ TEST(CsdpCrosscheck, PaperDbar1) {
   const double ref = csdp_gamma2(P, &r);
   const hinf::synth::Settings st;
   const auto res = hinf::synth::synthesize(P, st);
-  const double corrected = ref + st.lmi_margin * r.trace_X;
+  const double corrected = ref + st.solver.lmi_margin * r.trace_X;
   std::printf("  δ̄ = 1: ours γ² = %.10g (lower bound %.10g); CSDP primal %.10g dual %.10g, "
               "tr X %.6g, dual + ε tr X = %.10g\n", res.gamma_squared,
               res.solver.dual_bound_gamma_squared, r.primal, r.dual, r.trace_X, corrected);
@@ -208,14 +208,14 @@ TEST(CsdpCrosscheck, RandomN10CertifiedBracketHoldsCsdpOptimum) {
   ASSERT_LE(csdp_gap, 1e-7) << "CSDP's own gap is too wide for a reference at this accuracy\n" << r.output;
   const hinf::synth::Settings st;
   const auto res = hinf::synth::synthesize(P, st);
-  const double corrected = ref + st.lmi_margin * r.trace_X;
+  const double corrected = ref + st.solver.lmi_margin * r.trace_X;
   const double lower = res.solver.dual_bound_gamma_squared;
   std::printf("  n = 10 (LMI order %d, %d variables): ours γ² = %.12g, certified lower bound %.12g (relative gap %.2e); CSDP primal "
               "%.12g dual %.12g (gap %.1e), tr X %.4g, dual + ε tr X = %.12g\n",
               res.solver.lmi_order, res.solver.variables, res.gamma_squared, lower, res.solver.relative_gap,
               r.primal, r.dual, csdp_gap, r.trace_X,
               corrected);
-  EXPECT_LE(res.solver.relative_gap, st.relative_gap_tol);
+  EXPECT_LE(res.solver.relative_gap, st.solver.relative_gap_tol);
   EXPECT_LE(lower, corrected * (1 + csdp_gap + 1e-8));
   EXPECT_GE(res.gamma_squared, corrected * (1 - csdp_gap - 1e-8));
   EXPECT_TRUE(res.certificate.passed);

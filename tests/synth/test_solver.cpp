@@ -50,8 +50,8 @@ TEST(Solver, GapBracketAndCertificate) {
     EXPECT_GT(r.solver.dual_bound_gamma_squared, 0.0);
     // the certified gap meets the tolerance; the written γ² may be the optimum's value
     // times (1 + relative_gap_tol) (synthesize's retry of check 4), hence 2·tol
-    EXPECT_LE(r.solver.relative_gap, st.relative_gap_tol);
-    EXPECT_LE(r.gamma_squared - r.solver.dual_bound_gamma_squared, 2 * st.relative_gap_tol * r.gamma_squared)
+    EXPECT_LE(r.solver.relative_gap, st.solver.relative_gap_tol);
+    EXPECT_LE(r.gamma_squared - r.solver.dual_bound_gamma_squared, 2 * st.solver.relative_gap_tol * r.gamma_squared)
         << "gap larger than relative_gap_tol promises";
     EXPECT_NEAR(r.gamma * r.gamma, r.gamma_squared, 1e-14 * r.gamma_squared);
     EXPECT_TRUE(r.certificate.passed);

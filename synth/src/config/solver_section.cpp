@@ -15,13 +15,13 @@ Settings read_solver_section(const YamlReader& reader, const YAML::Node& solver)
   const auto integer = [&](const char* key, int& field) {
     if (const YAML::Node n = solver[key]) field = reader.integer(n, std::string("solver.") + key);
   };
-  number("lmi_margin", s.lmi_margin);
-  number("relative_gap_tol", s.relative_gap_tol);
-  number("barrier_growth", s.barrier_growth);
-  number("feasibility_radius", s.feasibility_radius);
-  integer("max_newton_per_centering", s.max_newton_per_centering);
-  integer("max_iterations", s.max_iterations);
-  number("time_limit_s", s.time_limit_s);
+  number("lmi_margin", s.solver.lmi_margin);
+  number("relative_gap_tol", s.solver.relative_gap_tol);
+  number("barrier_growth", s.solver.barrier_growth);
+  number("feasibility_radius", s.solver.feasibility_radius);
+  integer("max_newton_per_centering", s.solver.max_newton_per_centering);
+  integer("max_iterations", s.solver.max_iterations);
+  number("time_limit_s", s.solver.time_limit_s);
   number("max_memory_mb", s.max_memory_mb);
   number("gamma_backoff", s.gamma_backoff);
   integer("stability_samples", s.stability_samples);

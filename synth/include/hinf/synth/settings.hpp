@@ -1,10 +1,12 @@
-// Synthesis settings: a flat struct, one documented default per field, one validate().
-// Every field is set by the config's `solver:` section under its own name, but for `form`
-// and `estimate` (the config's `filter.form`, `filter.estimate`).
+// Synthesis settings: one documented default per field, one validate(). The solver's options
+// are its own struct (sdp::Options, as Ceres gives its inner solver its own options); the rest
+// are the synthesis's and its certificate's. Every field is set by the config's `solver:`
+// section under its own name, but for `form` and `estimate` (`filter.form`, `filter.estimate`).
 #pragma once
 #include <string>
 
 #include "hinf/models/plant.hpp"
+#include "hinf/sdp/path_following.hpp"
 
 namespace hinf::synth {
 
@@ -18,22 +20,13 @@ struct Settings {
   // The estimate an observer-form filter gives (config `filter.estimate: predicted | filtered`):
   // of z(k) from y(0..k−1), or from y(0..k) (docs/maths.md §18.6; observer form only).
   hinf::Estimate estimate = hinf::Estimate::Predicted;
-  // Strictness margin of the LMI, relative to the equilibrated problem: the solver
-  // enforces −M(x) ⪰ lmi_margin·I (docs/maths.md (26), [D2], [D3]). Refused below 1e-14
-  // (solver tolerance).
-  double lmi_margin = 1e-12;
-  // Stop when the barrier's duality gap (N+1)/t is below this fraction of γ².
-  double relative_gap_tol = 1e-7;
-  // Factor by which the barrier parameter t grows between centring steps.
-  double barrier_growth = 50.0;
-  // Feasibility radius on the equilibrated variables (LMI Lab's "feasradius").
-  double feasibility_radius = 1e8;
-  // Newton iterations allowed in one centring step (Ipopt's max_iter).
-  int max_newton_per_centering = 60;
-  // Total Newton iterations allowed in one solve (phase I + phase II).
-  int max_iterations = 600;
-  // Wall-clock limit for one solve, seconds.
-  double time_limit_s = 600.0;
+  // The interior-point solver's own options (docs/maths.md §5), each documented with its
+  // default in hinf/sdp/path_following.hpp and set by the config's `solver:` key of the same
+  // name: lmi_margin (strictness −M(x) ⪰ ε·I on the equilibrated LMI, (26), [D2], [D3]; refused
+  // below 1e-14, the solver's tolerance), relative_gap_tol, barrier_growth,
+  // feasibility_radius, max_newton_per_centering, max_iterations, time_limit_s. The
+  // synthesis passes them to the solver as they are; they are never written twice.
+  sdp::Options solver;
   // Refuse (exit 2, before allocating) an SDP whose solve the solver's memory model
   // (hinf/sdp/memory_model.hpp) puts above this many MiB. The default leaves a third of
   // a 24 GiB machine free; raise it on a larger one.
