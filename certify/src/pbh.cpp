@@ -12,7 +12,7 @@ std::optional<UnseenMode> unseen_unstable_mode(const Eigen::MatrixXd& A, const E
   const Eigen::Index n = A.rows();
   const double u = std::numeric_limits<double>::epsilon() / 2;
   Eigen::ComplexEigenSolver<Eigen::MatrixXd> es(A, false);
-  const double norm_X = X.norm();
+  const double norm_A = A.norm(), norm_X = X.norm();
   const Eigen::MatrixXcd Xs = X.cast<std::complex<double>>() / (norm_X > 0 ? norm_X : 1.0);
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
     const std::complex<double> lambda = es.eigenvalues()(i);
@@ -21,7 +21,7 @@ std::optional<UnseenMode> unseen_unstable_mode(const Eigen::MatrixXd& A, const E
     const Eigen::MatrixXcd shifted = A.cast<std::complex<double>>() - lambda * Eigen::MatrixXcd::Identity(n, n);
     // the shifted block at unit norm, but never magnified beyond 1/√u of the data's scale: where
     // A − λI is that close to 0 (A ≈ λI) its entries are mostly rounding and X decides
-    const double data = A.norm() + std::abs(lambda);
+    const double data = norm_A + std::abs(lambda);
     const double block = std::max({shifted.norm(), std::sqrt(u) * data, std::numeric_limits<double>::min()});
     Eigen::MatrixXcd pbh(n + X.rows(), n);
     pbh << shifted / block, Xs;

@@ -19,12 +19,14 @@ struct StreamFunctions {
   using Campaign = std::vector<std::vector<Stats>>;  // [run][filter]
   using Samples = std::vector<std::vector<Sample>>;  // [filter][sample] of run 0
   using Scenario = decltype(Experiment::scenario);
+  using Filters = decltype(Experiment::filters);
+  using RunOptions = decltype(Experiment::options);  // has on_sample
   const char* name;
   Experiment (*parse)(const std::string& text, const std::string& path);
   void (*shorten)(Experiment& e, double duration);  // --duration, already checked
-  // One run of every filter of e on `scenario` (e's own, or a variant), samples to on_sample.
-  std::vector<Stats> (*run)(const Experiment& e, const Scenario& scenario, std::uint64_t seed,
-                            const std::function<void(int, const Sample&)>& on_sample);
+  // One run of every filter on `scenario` (the experiment's own, or a variant) with `seed`.
+  std::vector<Stats> (*run)(const Scenario& scenario, const Filters& filters, const RunOptions& options,
+                            std::uint64_t seed);
   std::string (*trajectory_csv)(const Experiment& e, const Samples& samples);
   std::string (*runs_csv)(const Experiment& e, const Campaign& stats, const std::vector<std::uint64_t>& seeds);
   std::string (*summary_json)(const Experiment& e, const Campaign& stats, const std::string& path, std::uint64_t seed);
@@ -40,9 +42,11 @@ template <class Experiment, class Stats, class Sample>
 std::vector<std::vector<Stats>> stream_campaign(const StreamFunctions<Experiment, Stats, Sample>& f,
                                                 const CampaignRequest& r, const Experiment& e,
                                                 const decltype(Experiment::scenario)& scenario,
-                                                std::vector<std::vector<Sample>>* samples) {
+                                                typename StreamFunctions<Experiment, Stats, Sample>::Samples* samples) {
   return campaign<Stats, Sample>(r, samples, [&](std::uint64_t seed, const std::function<void(int, const Sample&)>& on) {
-    return f.run(e, scenario, seed, on);
+    auto options = e.options;
+    options.on_sample = on;
+    return f.run(scenario, e.filters, options, seed);
   });
 }
 

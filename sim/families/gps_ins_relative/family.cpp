@@ -21,14 +21,6 @@ void shorten_gps_ins(GpsInsExperiment& e, double duration) {
   if (e.options.window_start >= e.options.window_end) e.options.window_start = e.options.window_end / 2;
 }
 
-std::vector<GpsInsFilterStatistics> run_gps_ins_once(const GpsInsExperiment& e, const GpsInsScenario& scenario,
-                                                     std::uint64_t seed,
-                                                     const std::function<void(int, const GpsInsSample&)>& on) {
-  GpsInsRunOptions options = e.options;
-  options.on_sample = on;
-  return run_gps_ins(scenario, e.filters, options, seed);
-}
-
 const GpsIns::Functions& functions();
 
 // table1.csv: one campaign per table-1 fraction, the scenario's own where the fraction is its own.
@@ -43,14 +35,14 @@ void table1(const CampaignRequest& r, const GpsInsExperiment& e, const Campaign&
     }
     GpsInsScenario scenario = e.scenario;
     scenario.inertia_products_fraction = p;
-    campaigns.push_back(stream_campaign(functions(), r, e, scenario, static_cast<GpsIns::Functions::Samples*>(nullptr)));
+    campaigns.push_back(stream_campaign(functions(), r, e, scenario, nullptr));
   }
   files.emplace_back("table1.csv", format_gps_ins_table1_csv(e, e.table1_fractions, campaigns));
 }
 
 const GpsIns::Functions& functions() {
   static const GpsIns::Functions f{"gps_ins_relative",          parse_gps_ins_scenario,  shorten_gps_ins,
-                                   run_gps_ins_once,            format_gps_ins_trajectory_csv,
+                                   run_gps_ins,            format_gps_ins_trajectory_csv,
                                    format_gps_ins_runs_csv,     format_gps_ins_summary_json,
                                    write_gps_ins_plots,         table1};
   return f;

@@ -14,20 +14,12 @@ void shorten_gyroless(GyrolessExperiment& e, double duration) {
   if (e.options.window_start >= duration) e.options.window_start = duration / 2;
 }
 
-std::vector<GyrolessFilterStatistics> run_gyroless_once(const GyrolessExperiment& e, const GyrolessScenario& scenario,
-                                                        std::uint64_t seed,
-                                                        const std::function<void(int, const GyrolessSample&)>& on) {
-  GyrolessRunOptions options = e.options;
-  options.on_sample = on;
-  return run_gyroless(scenario, e.filters, options, seed);
-}
-
 using Gyroless = StreamFamily<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample>;
 
 }  // namespace
 
 const Family& gyroless_attitude() {
-  static const Gyroless family({"gyroless_attitude", parse_gyroless_scenario, shorten_gyroless, run_gyroless_once,
+  static const Gyroless family({"gyroless_attitude", parse_gyroless_scenario, shorten_gyroless, run_gyroless,
                                 format_gyroless_trajectory_csv, format_gyroless_runs_csv, format_gyroless_summary_json,
                                 write_gyroless_plots});
   return family;

@@ -11,21 +11,13 @@ namespace {
 
 void shorten_manoeuvring(ManoeuvringExperiment& e, double duration) { e.scenario.duration = duration; }
 
-std::vector<ManoeuvringFilterStatistics> run_manoeuvring_once(
-    const ManoeuvringExperiment& e, const ManoeuvringScenario& scenario, std::uint64_t seed,
-    const std::function<void(int, const ManoeuvringSample&)>& on) {
-  ManoeuvringRunOptions options = e.options;
-  options.on_sample = on;
-  return run_manoeuvring(scenario, e.filters, options, seed);
-}
-
 using Manoeuvring = StreamFamily<ManoeuvringExperiment, ManoeuvringFilterStatistics, ManoeuvringSample>;
 
 }  // namespace
 
 const Family& manoeuvring_target() {
   static const Manoeuvring family({"manoeuvring_target", parse_manoeuvring_scenario, shorten_manoeuvring,
-                                   run_manoeuvring_once, format_manoeuvring_trajectory_csv,
+                                   run_manoeuvring, format_manoeuvring_trajectory_csv,
                                    format_manoeuvring_runs_csv, format_manoeuvring_summary_json,
                                    write_manoeuvring_plots});
   return family;
