@@ -16,7 +16,8 @@ set(HINF_LAYER_hinf_runtime_yaml  hinf_runtime hinf_models hinf_common)
 set(HINF_LAYER_hinf_lmi           hinf_common)
 set(HINF_LAYER_hinf_sdp           hinf_lmi hinf_common)
 set(HINF_LAYER_hinf_certify       hinf_models hinf_common)
-set(HINF_LAYER_hinf_synth         hinf_certify hinf_sdp hinf_lmi hinf_common hinf_models)
+set(HINF_LAYER_hinf_synth         hinf_certify hinf_sdp hinf_lmi hinf_common hinf_models
+                                  hinf_runtime_yaml hinf_runtime)
 set(HINF_LAYER_hinf_codegen       hinf_runtime_yaml hinf_runtime hinf_models hinf_common)
 set(HINF_LAYER_hinf_sim           hinf_runtime hinf_runtime_yaml hinf_synth hinf_certify hinf_sdp
                                   hinf_lmi hinf_common hinf_models)
@@ -30,7 +31,8 @@ set(HINF_EXTERNAL_hinf_runtime    Eigen3::Eigen)
 set(HINF_EXTERNAL_hinf_lmi        Eigen3::Eigen yaml-cpp)
 set(HINF_EXTERNAL_hinf_sdp        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT)
 set(HINF_EXTERNAL_hinf_certify    Eigen3::Eigen yaml-cpp LAPACK)
-set(HINF_EXTERNAL_hinf_synth      Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK)
+set(HINF_EXTERNAL_hinf_synth      Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
+                                  nlohmann_json::nlohmann_json)
 set(HINF_EXTERNAL_hinf_sim        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
                                   Threads::Threads nlohmann_json::nlohmann_json Boost::headers)
 

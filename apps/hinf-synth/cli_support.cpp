@@ -23,76 +23,7 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
   return args;
 }
 
-ConfigAndFilter load_config_and_filter(const std::string& config_path, const std::string& gains_path) {
-  synth::SynthConfig config = synth::load_config(config_path);
-  runtime_yaml::GainsFile gains = runtime_yaml::load_gains_file(gains_path);
-  hinf::Filter filter = filter_from_gains(gains, config.plant, gains_path);
-  return {std::move(config), std::move(gains), std::move(filter)};
-}
-
 std::string num(double v) { return hinf::significant_text(v, 10); }
-
-hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Plant& plant,
-                                const std::string& path) {
-  auto need = [&](const char* key, const Eigen::MatrixXd& M, int r, int c) {
-    if (M.rows() != r || M.cols() != c)
-      throw Error(ErrorCode::InvalidInput,
-                  path + ": filter." + key + " is " + std::to_string(M.rows()) + "x" +
-                      std::to_string(M.cols()) + ", the config's plant needs " + std::to_string(r) +
-                      "x" + std::to_string(c));
-  };
-  need("A_F", g.A_F, plant.n(), plant.n());
-  need("B_F", g.B_F, plant.n(), plant.m());
-  need("C_F", g.C_F, plant.l(), plant.n());
-  need("G_F", g.G_F, plant.n(), plant.r());
-  hinf::Filter f;
-  f.A_F = g.A_F;
-  f.B_F = g.B_F;
-  f.C_F = g.C_F;
-  f.G_F = g.G_F;
-  if (g.observer_form) {
-    need("K", g.K, plant.n(), plant.m());
-    f.form = hinf::FilterForm::Observer;
-    f.K = g.K;
-  }
-  if (g.filtered) {  // docs/maths.md (140)
-    need("M", g.M, plant.n(), plant.m());
-    need("D_F", g.D_F, plant.l(), plant.m());
-    f.M = g.M;
-    f.D_F = g.D_F;
-  }
-  return f;
-}
-
-std::string seconds_text(double s) {
-  char buf[32];
-  if (s < 100) std::snprintf(buf, sizeof buf, "%.2g s", s);
-  else if (s < 6000) std::snprintf(buf, sizeof buf, "%.2g min", s / 60);
-  else std::snprintf(buf, sizeof buf, "%.2g h", s / 3600);
-  return buf;
-}
-
-void print_coefficient_ranges(const hinf::Plant& p, std::FILE* out) {
-  auto range = [&](const char* name, const Eigen::MatrixXd& M) {
-    double lo = INFINITY, hi = 0;
-    for (int i = 0; i < M.size(); ++i) {
-      const double a = std::abs(M.data()[i]);
-      if (a > 0) lo = std::min(lo, a), hi = std::max(hi, a);
-    }
-    if (hi == 0) std::fprintf(out, "  %-2s %dx%d  all zero\n", name, (int)M.rows(), (int)M.cols());
-    else std::fprintf(out, "  %-2s %dx%d  |nonzero| in [%.3g, %.3g]\n", name, (int)M.rows(), (int)M.cols(), lo, hi);
-  };
-  std::fprintf(out, "plant coefficient ranges:\n");
-  range("A", p.A);
-  range("B", p.B);
-  range("C", p.C);
-  range("D", p.D);
-  range("L", p.L);
-  if (p.uncertain()) {
-    range("H", p.H);
-    range("E", p.E);
-  }
-}
 
 bool IterationTable::heartbeat(const sdp::Progress& r) {
   if (r.newton_step && !estimated_ && r.centering == 0 && r.newton == 1) {  // the first Newton iteration has ended

@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "hinf/runtime_yaml/gains_file.hpp"
-#include "hinf/synth/config.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "verbose_log.hpp"
 
@@ -24,21 +22,8 @@ struct ConfigGainsArgs {
 // Registers both positionals (required) on `cmd`; the values are there once parsed.
 std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std::string& gains_help);
 
-// A config and a gains file read together (in that order), with the gains' filter.
-struct ConfigAndFilter {
-  synth::SynthConfig config;
-  runtime_yaml::GainsFile gains;
-  hinf::Filter filter;  // checked against the config's plant
-};
-ConfigAndFilter load_config_and_filter(const std::string& config_path, const std::string& gains_path);
-
-// Gains file → Filter, with dimensions checked against the plant (Error InvalidInput).
-hinf::Filter filter_from_gains(const runtime_yaml::GainsFile& g, const hinf::Plant& plant,
-                                const std::string& path);
 // "%.10g"
 std::string num(double v);
-// A duration for people: "0.12 s", "45 s", "3.2 min", "1.5 h" (two significant digits).
-std::string seconds_text(double s);
 // A PNG drawn by gnuplot from CSV data (sweep --plot, compare --plot): `script(data_path,
 // png_path)` is the gnuplot script; the data and script are scratch files beside `png`,
 // removed on return; the PNG is written atomically and never replaces one of `inputs`.
@@ -46,8 +31,6 @@ std::string seconds_text(double s);
 void write_png_by_gnuplot(const std::string& png, const std::string& csv,
                           const std::function<std::string(const std::string&, const std::string&)>& script,
                           const std::vector<std::string>& inputs);
-// Coefficient ranges of the plant matrices (docs/maths.md [D5]), for --verbose.
-void print_coefficient_ranges(const hinf::Plant& plant, std::FILE* out);
 // The --verbose iteration table (a header whenever a new SDP starts), printed through a
 // VerboseLog that outlives it.
 class IterationTable {

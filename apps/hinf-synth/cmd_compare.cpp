@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli_support.hpp"
+#include "hinf/synth/filter_file.hpp"
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/common/gnuplot.hpp"  // gnuplot_quoted
@@ -61,7 +62,7 @@ void add_compare(CLI::App& app, Action& action) {
       ->check(CLI::Range(2, 100000));
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const ConfigAndFilter in = load_config_and_filter(args->config, args->gains);
+      const synth::ConfigAndFilter in = synth::load_config_and_filter(args->config, args->gains);
       const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points,
                                                                  in.config.kalman_noise);
       const std::optional<double> T = in.config.sample_time();

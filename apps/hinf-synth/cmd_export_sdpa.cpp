@@ -1,12 +1,11 @@
-// hinf-synth export-sdpa CONFIG -o FILE.dat-s
+// hinf-synth export-sdpa CONFIG -o FILE.dat-s: the synthesis LMI of any problem kind
+// (synth::Problem::export_sdpa) in SDPA sparse format.
 #include <iostream>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
-#include "hinf/synth/controller_config.hpp"
-#include "hinf/synth/controller_synthesis.hpp"
-#include "hinf/synth/gains_output.hpp"
+#include "hinf/synth/api.hpp"
 
 namespace hinf::cli {
 
@@ -18,24 +17,7 @@ void add_export_sdpa(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write")->required();
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const std::string bytes = synth::read_config_bytes(*config);
-      if (synth::declares_controller(bytes)) {  // the controller LMI (docs/maths.md §26)
-        const synth::ControllerConfig ctl = synth::parse_controller_config(bytes, *config);
-        hinf::write_file_atomic(*output,
-                                synth::controller_sdpa(ctl.plant, ctl.design,
-                                                       std::string("from ") + *config + " (sha256 " + ctl.sha256 +
-                                                           "), by hinf-synth " + synth::tool_version() +
-                                                           "\nminimise the scaled gamma; the SDPA dual objective is its optimum"),
-                                {*config});
-        std::cout << "SDPA problem written to " << *output << "\n";
-        return 0;
-      }
-      const synth::SynthConfig cfg = synth::parse_config(bytes, *config);
-      const std::string text = synth::synthesis_sdpa(
-          cfg.plant, cfg.settings, std::string("from ") + *config + " (sha256 " + cfg.sha256 +
-                         "), by hinf-synth " + synth::tool_version() +
-                         "\nminimise gamma^2; the SDPA dual objective is gamma*^2");
-      hinf::write_file_atomic(*output, text, {*config});
+      hinf::write_file_atomic(*output, synth::load_problem(*config)->export_sdpa(), {*config});
       std::cout << "SDPA problem written to " << *output << "\n";
       return 0;
     };

@@ -64,4 +64,12 @@ std::string significant_text(double value, int digits) {
   return buf;
 }
 
+std::string duration_text(double seconds) {
+  char buf[32];
+  if (seconds < 100) std::snprintf(buf, sizeof buf, "%.2g s", seconds);
+  else if (seconds < 6000) std::snprintf(buf, sizeof buf, "%.2g min", seconds / 60);
+  else std::snprintf(buf, sizeof buf, "%.2g h", seconds / 3600);
+  return buf;
+}
+
 }  // namespace hinf

@@ -5,12 +5,11 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <unistd.h>
 
+#include "api_test_support.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/sim/family.hpp"
 
@@ -18,23 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-// `text` without its timing lines (a synthesis' solve_time_s: "timing apart", as
-// scripts/output-digest compares outputs).
-std::string timing_apart(const std::string& text) {
-  static const std::regex timing("solve_time_s|wall_s|elapsed|_seconds");
-  std::istringstream in(text);
-  std::string line, out;
-  while (std::getline(in, line))
-    if (!std::regex_search(line, timing)) out += line + "\n";
-  return out;
-}
+using hinf::test::slurp;
+using hinf::test::timing_apart;
 
 struct Case {
   const char* scenario;  // configs/scenarios/NAME.yaml

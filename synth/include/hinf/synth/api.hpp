@@ -1,0 +1,97 @@
+// The synthesis API (docs/design.md "The synthesis API"): one include for users, one entry
+// per job — synthesise, analyse, verify, check against a golden file, export the LMI — over
+// every problem kind. A config is parsed once into a `Problem`; the registry
+// (synth/src/kind_registry.cpp) picks its kind from the config's keys, and each kind
+// (synth/kinds/<name>/) supplies its LMI, recovery, certificate, file section and report
+// behind this one interface. Nothing here prints, exits or writes a file: a job returns its
+// result in memory — the typed result, the file's text, the report a front end prints — and
+// failures are hinf::Error, whose code is the exit code (common/error.hpp).
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "hinf/synth/analysis.hpp"
+#include "hinf/synth/controller_regression.hpp"
+#include "hinf/synth/controller_synthesis.hpp"
+#include "hinf/synth/regression.hpp"
+#include "hinf/synth/synthesis.hpp"
+
+namespace hinf::synth {
+
+// What a caller hears while a job runs; both may be empty (the default: nothing).
+struct JobObservers {
+  // Every solver iteration (solve and check), for an iteration table.
+  IterationObserver on_iteration;
+  // The lines of the verbose account of a solve (coefficient ranges, problem size and time
+  // estimate, the scaling applied, the optimality gap), one line per call, no newline.
+  std::function<void(const std::string&)> on_log;
+};
+
+// `solve`: the certified design.
+struct SolveOutcome {
+  double gamma = 0;
+  std::string file;    // the file to write: hinf-gains/1 (filters) or hinf-controller/1 (controllers)
+  std::string file_contents;  // what the file holds, for people: "gains", "controller"
+  std::string report;  // the summary a front end prints (lines ending in '\n')
+  std::variant<SynthesisResult, ControllerSynthesisResult> result;
+};
+
+struct AnalysisOptions {
+  // Points of the δ grid over [−δ̄, δ̄] (configs with `hill:`), 2 to 100001.
+  int delta_points = 41;
+};
+
+// `analyze`: the figures of a given gains or controller file on the problem (no verdict).
+struct AnalysisOutcome {
+  std::string report;  // text
+  std::string json;    // the same figures as one line of JSON (no newline)
+  std::variant<FilterAnalysis, ControllerCertificate> result;
+};
+
+// `verify`: whether the file's claimed γ holds for the problem (the certificate re-derived).
+struct VerifyOutcome {
+  bool holds = false;
+  std::string report;
+  std::variant<Verification, ControllerVerification> result;
+};
+
+// `check`: the problem synthesised again and compared with a golden file.
+struct CheckOutcome {
+  bool same = false;
+  double gamma_now = 0;
+  std::string report;
+  std::variant<GoldenComparison, ControllerGoldenComparison> result;
+};
+
+// A parsed, validated config of one problem kind. Jobs are const and may run concurrently.
+class Problem {
+ public:
+  virtual ~Problem() = default;
+  // The kind's registered name ("filter", "controller").
+  virtual std::string_view kind() const = 0;
+  // The path (or source name) the config was read from, and the SHA-256 of its bytes.
+  virtual const std::string& source() const = 0;
+  virtual const std::string& sha256() const = 0;
+  // True if the config itself asks for the verbose account (`solver: {verbose: true}`).
+  virtual bool verbose() const = 0;
+
+  virtual SolveOutcome solve(const JobObservers& observers = {}) const = 0;
+  // `file_path`: a gains file (filters) or a controller file (controllers), read here.
+  virtual AnalysisOutcome analyze(const std::string& file_path, const AnalysisOptions& options = {}) const = 0;
+  virtual VerifyOutcome verify(const std::string& file_path) const = 0;
+  // rtol: relative tolerance on γ and on the transfer functions' difference.
+  virtual CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers = {}) const = 0;
+  // The synthesis LMI in SDPA sparse format (for CSDP, SDPA, …), with provenance comments.
+  virtual std::string export_sdpa() const = 0;
+};
+
+// Parses config text of any kind; `source_name` names it in messages and in the outputs'
+// provenance. Error(InvalidInput) naming the key, dimension or value.
+std::unique_ptr<Problem> parse_problem(const std::string& yaml_text, const std::string& source_name);
+// The same from a file's exact bytes (size-capped, regular files only).
+std::unique_ptr<Problem> load_problem(const std::string& path);
+
+}  // namespace hinf::synth
