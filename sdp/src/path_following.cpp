@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "damped_newton.hpp"
 #include "ipopt_centering.hpp"
@@ -107,6 +108,9 @@ class PathFollower {
   // Runs one barrier along its central path from z; true when it ended as it should
   // (phase I: a strictly feasible point; phase II: the gap goal). z is the final point.
   bool follow(LogDetBarrier& b, VectorXd& z, Phase phase);
+  // Ends phase II at the last centred point (z), its gap the solution's: `why` the end game
+  // stopped there. StoppedShort if that gap is above the tolerance.
+  bool accept_last_centred(const LogDetBarrier& b, VectorXd& z, const std::string& why);
   double initial_t(LogDetBarrier& b, const VectorXd& z) const;
   CenteringOptions centering_options(const LogDetBarrier& b, Phase phase, int centring) const;
   std::function<void()> heartbeat(Phase phase) const;
@@ -136,6 +140,7 @@ class PathFollower {
   IpoptCentering ipopt_;
   PathState s_;
   Solution sol_;
+  bool stopped_short_ = false;  // phase II ended at a point whose gap is above the tolerance
 };
 
 bool PathFollower::out_of_budget() {
@@ -268,6 +273,26 @@ Recovery PathFollower::recover(LogDetBarrier& b, Phase phase) {
   return Recovery::Fail;
 }
 
+// Three significant digits, for the detail of a point returned short of the tolerance.
+std::string three_digits(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+bool PathFollower::accept_last_centred(const LogDetBarrier& b, VectorXd& z, const std::string& why) {
+  sol_.gap = s_.last_gap;
+  sol_.t = s_.last_t;
+  z = s_.last_centred;
+  const double relative = last_relative_gap(b);
+  stopped_short_ = relative > opt_.relative_gap_tol;
+  sol_.detail = why + "; returned the last centred point" +
+                (stopped_short_ ? " (relative gap " + three_digits(relative) + ", above the tolerance " +
+                                      three_digits(opt_.relative_gap_tol) + ")"
+                                : std::string());
+  return true;
+}
+
 // Predictor along the central path, kept inside the domain. x*(t) − x* = O(1/t) on the
 // central path: extrapolate linearly in 1/t, Δx = (dx/d(1/t))·(1/t_new − 1/t) =
 // t·(1 − t/t_new)·dx/dt.
@@ -325,17 +350,17 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
           s_.t = s_.last_t * s_.growth;
           continue;
         case Recovery::AcceptLastCentred:
-          sol_.gap = s_.last_gap;
-          sol_.detail = "final centring stopped by round-off; returned the last centred point";
-          z = s_.last_centred;
-          return true;
-        case Recovery::Fail:
+          return accept_last_centred(b, z, "final centring stopped by round-off");
+        case Recovery::Fail: {
           if (out_of_budget()) return false;
+          const std::string failed = "centring failed in phase " + std::to_string(static_cast<int>(phase)) +
+                                     " at t = " + std::to_string(s_.t) + " (" +
+                                     (s_.engine == Engine::QrNewton ? "QR Newton: " : "Ipopt: ") + r.status + ")";
+          if (minimise && s_.have_centred) return accept_last_centred(b, z, failed);  // the best point, kept
           sol_.status = Status::NumericalError;
-          sol_.detail = "centring failed in phase " + std::to_string(static_cast<int>(phase)) + " at t = " +
-                        std::to_string(s_.t) + " (" +
-                        (s_.engine == Engine::QrNewton ? "QR Newton: " : "Ipopt: ") + r.status + ")";
+          sol_.detail = failed;
           return false;
+        }
       }
     }
     if (!minimise) sol_.phase1_path.push_back(z);
@@ -425,7 +450,7 @@ Solution PathFollower::solve(const VectorXd& x0) {
     if (sol_.status == Status::NotRun) sol_.status = Status::NumericalError;
     return sol_;
   }
-  sol_.status = Status::Solved;
+  sol_.status = stopped_short_ ? Status::StoppedShort : Status::Solved;
   sol_.relative_gap = sol_.gap / std::max(std::abs(sol_.objective), 1e-300);
   return sol_;
 }

@@ -6,6 +6,7 @@ namespace hinf::sdp {
 const char* status_message(Status status) {
   switch (status) {
     case Status::Solved: return "solved: relative gap below tolerance";
+    case Status::StoppedShort: return "stopped short of the gap tolerance: the last centred point, its gap reported";
     case Status::Infeasible: return "infeasible: phase I ended with a positive minimal violation";
     case Status::MaxIterations: return "iteration limit reached";
     case Status::TimeLimit: return "time limit reached";

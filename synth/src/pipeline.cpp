@@ -4,6 +4,7 @@
 #include "pipeline.hpp"
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 
 #include "hinf/certify/dense_lmi.hpp"
@@ -104,15 +105,24 @@ sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const st
                                            staged(observer, SolveStage::Synthesis));
   // Near the boundary of feasibility the feasible set lies far out (the Lyapunov matrix,
   // the multiplier and γ* grow as the uncertainty channel's gain nears 1): a centring that
-  // fails on round-off is retried with both balls wider (docs/maths.md §4.3).
-  while (sol.status == sdp::Status::NumericalError && options.feasibility_radius < kMaxRetryRadius) {
+  // fails on round-off is retried with both balls wider (docs/maths.md §4.3). A point the
+  // solver stopped short at is kept unless a retry does better (it is never discarded).
+  std::optional<sdp::Solution> best;
+  const auto keep_best = [&] {
+    if (sdp::has_point(sol.status) && (!best || sol.status == sdp::Status::Solved || sol.objective < best->objective))
+      best = sol;
+  };
+  keep_best();
+  while ((sol.status == sdp::Status::NumericalError || sol.status == sdp::Status::StoppedShort) &&
+         options.feasibility_radius < kMaxRetryRadius) {
     options.feasibility_radius = std::min(options.feasibility_radius * kRetryRadiusFactor, kMaxRetryRadius);
     options.time_limit_s =
         settings.solver.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.time_limit_s <= 0) break;
     sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(), staged(observer, SolveStage::Synthesis));
+    keep_best();
   }
-  if (sol.status == sdp::Status::Solved) return sol;
+  if (best) return *best;
   if (sol.status == sdp::Status::Infeasible)
     throw infeasibility_verdict(lmi, sol, basis_error, settings, what, infeasible_hint);
   std::string msg = what + ": " + sdp::status_message(sol.status);
@@ -133,7 +143,7 @@ sdp::Solution solve_backoff(const lmi::LmiProblem& lmi, lmi::VarId margin, doubl
   options.relative_gap_tol = std::max(settings.solver.relative_gap_tol, kBackoffRelativeGap);
   const sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(margin), options, VectorXd(),
                                                  staged(observer, SolveStage::Backoff));
-  if (sol.status != sdp::Status::Solved || !(sol.objective < 0))
+  if (!sdp::has_point(sol.status) || !(sol.objective < 0))
     throw Error(ErrorCode::NumericalFailure,
                 std::string("gamma back-off: maximising the LMI margin at γ = ") + fmt(std::sqrt(gamma2_backoff)) +
                     " failed: " + sdp::status_message(sol.status) + (sol.detail.empty() ? "" : ": " + sol.detail));

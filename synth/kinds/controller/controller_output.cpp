@@ -94,6 +94,7 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
   kv(out, "ipopt_version", sdp::newton_engine_version());
   kv(out, "eigen_version", eigen_version());
   kv(out, "newton_iterations", r.newton_iterations);
+  if (r.stopped_short) kv(out, "stopped_short", *r.stopped_short);
   kv(out, "lmi_order", r.lmi_order);
   kv(out, "variables", r.variables);
   out << YAML::EndMap;

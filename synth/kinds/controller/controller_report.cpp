@@ -23,11 +23,14 @@ std::string certificate_lines(const ControllerCertificate& c, bool discrete) {
 }  // namespace
 
 std::string solve(const ControllerSynthesisResult& r, const ControllerConfig& cfg) {
-  std::string out = "gamma = " + num(r.gamma) + " (closed-loop Hinf norm " + num(r.certificate.closed_loop_hinf_norm) +
-                    "), certified; " + (cfg.design.strictly_proper ? "strictly proper " : "") + to_string(cfg.plant.time) +
-                    "-time controller [" + std::to_string(r.newton_iterations) + " Newton iterations, " + num(r.time_s) +
-                    " s]\n" + "cond(N) = " + num(r.certificate.cond_N) +
+  std::string out = "gamma = " + num(r.gamma) + " (the closed loop's Hinf norm, certified upper value); " +
+                    (cfg.design.strictly_proper ? "strictly proper " : "") + to_string(cfg.plant.time) +
+                    "-time controller [" + std::to_string(r.newton_iterations) + " Newton iterations, " +
+                    num(r.time_s) + " s]\n" + "cond(N) = " + num(r.certificate.cond_N) +
                     "; gamma bounds the gain from w to z of the closed loop\n";
+  if (r.stopped_short)
+    out += "the solver stopped short of its gap tolerance (" + *r.stopped_short +
+           "); the controller is that point's, certified\n";
   if (r.gamma_optimal)
     out += std::string("gamma back-off") +
            (cfg.settings.gamma_backoff > 0 ? "" : " (automatic: I - R S is singular at the optimum)") +

@@ -140,7 +140,7 @@ sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, c
                     "), yet the PBH pre-flight found (A, B2) stabilisable and (A, C2) detectable (in the pole disk, if one is "
                     "asked), so the LMI is feasible for a large enough gamma: a numerical failure (the plant's scales far "
                     "apart), no proof that no controller exists");
-  if (sol.status != sdp::Status::Solved)
+  if (!sdp::has_point(sol.status))
     throw Error(error_code_for(sol.status),
                 what + ": " + std::string(sdp::status_message(sol.status)) + (sol.detail.empty() ? "" : ": " + sol.detail));
   return sol;
@@ -187,7 +187,7 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
                                                     staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
       r.time_s += sb.elapsed_s;
-      if (sb.status != sdp::Status::Solved) {
+      if (!sdp::has_point(sb.status)) {
         why = "gamma back-off (docs/maths.md (149a)): maximising the LMI margin at gamma = " +
               fmt(*B.g_fixed * sc.gamma_factor()) + " failed: " + std::string(sdp::status_message(sb.status)) +
               (sb.detail.empty() ? "" : ": " + sb.detail);
@@ -265,7 +265,7 @@ void robust_design(const SynthesisContext& x, ControllerSynthesisResult& r) {
                                             staged(x.observer, SolveStage::Controller));
     r.newton_iterations += sm.newton_total;
     r.time_s += sm.elapsed_s;
-    const double g = sm.status == sdp::Status::Solved ? M.lmi.value(M.g, sm.x)(0, 0) : INFINITY;
+    const double g = sdp::has_point(sm.status) ? M.lmi.value(M.g, sm.x)(0, 0) : INFINITY;
     if (out) *out = std::move(sm);
     return g;
   };
@@ -326,6 +326,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   const sdp::Solution sol =
       minimize_gamma(C, settings, observer, "controller LMI (docs/maths.md (149)/(150))", 0, KnownFeasible::Yes);
   ControllerSynthesisResult r;
+  if (sol.status == sdp::Status::StoppedShort) r.stopped_short = sol.detail;
   r.newton_iterations = sol.newton_total;
   r.time_s = sol.elapsed_s;
   r.lmi_order = C.lmi.order();
@@ -352,9 +353,11 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
     r.nominal_robust_channel_norm = r.certificate.robust_channel_norm;
     robust_design(x, r);
   }
-  // What is certified is the closed loop's norm (its certified upper value): γ is never
-  // written below it, even within the recovery's slack certify::kClosedLoopNormSlack.
-  if (r.certificate.passed) r.gamma = std::max(r.gamma, r.certificate.closed_loop_hinf_norm);
+  // What is certified is the closed loop's norm (its certified upper value, a theorem about
+  // this controller): γ is that, the smallest the certificate proves — below the LMI's level
+  // when the recovery or a back-off left room (docs/maths.md (152b)), never below the norm
+  // even within the recovery's slack certify::kClosedLoopNormSlack.
+  if (r.certificate.passed) r.gamma = r.certificate.closed_loop_hinf_norm;
   if (!r.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "controller certificate failed: closed loop " + std::string(r.certificate.stable ? "stable" : "unstable") +

@@ -41,6 +41,14 @@ std::string multipliers_text(const Certificate& c) {
   return out + "] (one per block of F)";
 }
 
+// When the solver stopped short of its gap tolerance: what the written filter is.
+std::string stopped_short_line(const SolverInfo& s) {
+  if (s.status != sdp::Status::StoppedShort) return "";
+  return "the solver stopped short of its gap tolerance (" +
+         (s.gap_certified ? "certified relative gap " + num(s.relative_gap) : "gap not certified: " + s.gap_detail) +
+         "); the filter is the last centred point's, certified\n";
+}
+
 }  // namespace
 
 void log_before_solve(const Plant& p, const Settings& settings, const LogLine& log) {
@@ -86,7 +94,7 @@ std::string solve(const SynthesisResult& r) {
          ", robust bound " + num(r.certificate.robust_bound) + "), certified [" +
          std::to_string(r.solver.newton_iterations) + " Newton iterations, " + num(r.solver.time_s) + " s]\n" +
          "RMS error under unit white noise (H2 norm) " + num(r.certificate.h2_norm_nominal) +
-         " (compare: hinf-synth kalman)\n" + "filter form: " + to_string(r.filter.form) +
+         " (compare: hinf-synth kalman)\n" + stopped_short_line(r.solver) + "filter form: " + to_string(r.filter.form) +
          (r.filter.filtered() ? ", filtered estimate" : "") + "; " + r.bound + "\n";
 }
 

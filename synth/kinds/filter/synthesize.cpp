@@ -110,7 +110,7 @@ double solve_analysis(const Plant& user_plant, const Filter& user, const Setting
   require_memory(A.lmi, settings, "the robust analysis LMI");
   const VectorXd c = A.lmi.cost_of(A.g);
   const sdp::Solution sol = sdp::minimize_linear(A.lmi, c, settings.solver);
-  if (sol.status != sdp::Status::Solved)
+  if (!sdp::has_point(sol.status))
     throw Error(error_code_for(sol.status), "robust analysis LMI (docs/maths.md (50)): " +
                                                 std::string(sdp::status_message(sol.status)) +
                                                 (sol.detail.empty() ? "" : ": " + sol.detail));

@@ -35,7 +35,7 @@ using certify::ControllerCertificate;
 
 struct ControllerSynthesisResult {
   hinf::Controller controller;
-  double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ (the LMI's γ, or the closed loop's certified norm if larger)
+  double gamma = 0;  // certified: ‖T_zw‖∞ ≤ γ, the closed loop's certified norm (docs/maths.md (152b))
   // With settings.gamma_backoff > 0: the LMI's optimum γ* before the back-off (the solver's
   // value; the controller written is the back-off's, at (1 + b) γ*).
   std::optional<double> gamma_optimal;
@@ -51,6 +51,10 @@ struct ControllerSynthesisResult {
   bool robust_synthesis = false;
   double robust_scaling = 1;  // the D-scaling d of the robust design (p d, q / d)
   ControllerCertificate certificate;
+  // Set when the solver stopped short of its gap tolerance on the controller LMI (its end
+  // game failed on round-off): why, and the last centred point's relative gap. The
+  // controller is then recovered from that point and certified as any other.
+  std::optional<std::string> stopped_short;
   int newton_iterations = 0;
   int lmi_order = 0, variables = 0;
   double time_s = 0;
