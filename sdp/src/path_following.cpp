@@ -286,10 +286,11 @@ bool PathFollower::accept_last_centred(const LogDetBarrier& b, VectorXd& z, cons
   z = s_.last_centred;
   const double relative = last_relative_gap(b);
   stopped_short_ = relative > opt_.relative_gap_tol;
-  sol_.detail = why + "; returned the last centred point" +
-                (stopped_short_ ? " (relative gap " + three_digits(relative) + ", above the tolerance " +
-                                      three_digits(opt_.relative_gap_tol) + ")"
-                                : std::string());
+  const std::string gap_text = std::isfinite(relative)
+                                   ? "relative gap " + three_digits(relative) + ", above the tolerance " +
+                                         three_digits(opt_.relative_gap_tol)
+                                   : std::string("its gap not bounded: the accurate Newton step failed there");
+  sol_.detail = why + "; returned the last centred point" + (stopped_short_ ? " (" + gap_text + ")" : std::string());
   return true;
 }
 

@@ -196,6 +196,29 @@ Certificate certify_checks(const Plant& plant, const Filter& filter, double gamm
   return c;
 }
 
+namespace {
+
+// The γ written is the smallest the certificate proves (docs/maths.md §7.5): check 4's root
+// γ_λ at its multiplier (robust_bound), when a back-off or the recovery left room below the
+// LMI's level. Checks 2–4 are run again there (check 4 choosing its multiplier afresh at
+// that γ, whose root is lower again) while the bound falls and every check passes; check 1
+// stays the LMI's at the returned point, at its own level.
+constexpr int kTighteningRounds = 10;
+void tighten_to_certified_bound(const Plant& plant, const Settings& settings, const Eigen::VectorXd& multipliers,
+                                SynthesisResult& res) {
+  for (int round = 0; round < kTighteningRounds; ++round) {
+    const double bound = res.certificate.robust_bound;
+    if (!res.certificate.passed || !(bound < res.gamma) || !(bound > 0)) return;
+    const Certificate tight = certify_checks(plant, res.filter, bound, settings, multipliers);
+    if (!tight.passed) return;
+    res.certificate = tight;
+    res.gamma = bound;
+    res.gamma_squared = bound * bound;
+  }
+}
+
+}  // namespace
+
 // Check 1 (the LMI assembled densely at the returned point, with g = the certified γ²) and
 // checks 2–4. Only the rounding of the recovery (S⁻¹ or P⁻¹ near the boundary) can make the
 // recovered filter miss check 4 by a hair; then it is tried once more at
@@ -210,6 +233,7 @@ void certify_at_point(const Plant& plant, const MatrixXd& dense_lmi, double g, c
     res.certificate = certify_checks(plant, res.filter, std::sqrt(res.gamma_squared), settings, multipliers);
   }
   res.gamma = std::sqrt(res.gamma_squared);
+  tighten_to_certified_bound(plant, settings, multipliers, res);
   Certificate& cert = res.certificate;
   cert.lmi_max_eig = lmi_check.max_eig;
   cert.lmi_max_eig_relative = lmi_check.max_eig_relative;
