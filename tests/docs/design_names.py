@@ -19,7 +19,7 @@ import re
 import sys
 
 ROOTS = ("apps", "bench", "certify", "cmake", "codegen", "common", "configs", "docs", "fuzz", "lmi",
-         "models", "runtime", "runtime_yaml", "scripts", "sdp", "sim", "synth", "tests", ".ci")
+         "models", "python", "runtime", "runtime_yaml", "scripts", "sdp", "sim", "synth", "tests", ".ci")
 SUFFIXES = ("", ".hpp", ".cpp", ".h", ".sh", ".py")
 
 

@@ -1,0 +1,191 @@
+"""hinf: certified H-infinity filters and controllers, and their Monte-Carlo experiments,
+from Python (docs/python.md).
+
+The same library calls as the executables `hinf-synth` and `hinf-sim`, with results in
+memory: numpy arrays for the matrices, dicts for the certificate, the bracket and the
+campaign's summary. Nothing is written unless asked (`SynthesisResult.write`). A failure
+raises a subclass of `hinf.Error` whose `exit_code` is the executables' for the same
+failure (1 a check failed, 2 invalid input, 3 infeasible or ill-posed, 4 numerical
+failure) and whose message is theirs.
+
+    import hinf
+    r = hinf.synthesize("configs/paper-dbar0.05.yaml")
+    r.gamma, r.A_F, r.certificate["passed"]
+"""
+import csv
+import io
+import json
+import os
+import tempfile
+
+import numpy as np
+import yaml
+
+from . import _hinf
+
+__all__ = ["synthesize", "analyze", "verify", "check", "export_sdpa", "simulate", "Error", "CheckFailed",
+           "InvalidInput", "Infeasible", "NumericalFailure", "SynthesisResult", "Campaign"]
+
+
+class Error(Exception):
+    """A failure of the library: `exit_code` as the executables', `key` the input it names."""
+
+    exit_code = 0
+
+    def __init__(self, message, key=""):
+        super().__init__(message)
+        self.key = key
+
+
+class CheckFailed(Error):
+    exit_code = 1
+
+
+class InvalidInput(Error):
+    exit_code = 2
+
+
+class Infeasible(Error):
+    exit_code = 3
+
+
+class NumericalFailure(Error):
+    exit_code = 4
+
+
+_BY_CODE = {c.exit_code: c for c in (CheckFailed, InvalidInput, Infeasible, NumericalFailure)}
+
+
+def _call(fn, *args, **kwargs):
+    try:
+        return fn(*args, **kwargs)
+    except _hinf.NativeError as e:
+        code, message, key = e.args[0] if len(e.args) == 1 else e.args
+        raise _BY_CODE.get(code, Error)(message, key) from None
+
+
+def _plain(value):
+    """numpy arrays and scalars as lists and floats, for a config written as JSON (which is YAML)."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _plain(value.tolist())
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def _problem(config):
+    """A config given as a path, as YAML text, or as a dict (numpy arrays allowed)."""
+    if isinstance(config, dict):
+        # JSON is YAML; json.dumps writes every float with the digits that read it back exactly
+        return _call(_hinf.parse_problem, json.dumps(_plain(config), allow_nan=False), "<dict>")
+    if isinstance(config, os.PathLike) or (isinstance(config, str) and "\n" not in config and os.path.exists(config)):
+        return _call(_hinf.load_problem, os.fspath(config))
+    if isinstance(config, str):
+        return _call(_hinf.parse_problem, config, "<text>")
+    raise InvalidInput("config: expected a path, YAML text or a dict, got " + type(config).__name__)
+
+
+class SynthesisResult:
+    """A certified design: `gamma`, the matrices as attributes (A_F, B_F, C_F[, D_F, G_F] for a
+    filter; A_K, B_K, C_K, D_K for a controller), `certificate` and `solver` as dicts (the
+    file's sections), `iterations` (one dict per centring), `report` (the executable's text)
+    and `text` (the gains or controller file)."""
+
+    def __init__(self, outcome):
+        self.kind = outcome["kind"]
+        self.gamma = outcome["gamma"]
+        self.text = outcome["file"]
+        self.report = outcome["report"]
+        self.iterations = outcome["iterations"]
+        self.matrices = dict(outcome["matrices"])
+        self.form = self.matrices.pop("form", None)
+        for name, value in self.matrices.items():
+            setattr(self, name, value)
+        data = yaml.safe_load(self.text)
+        self.certificate = data.get("certificate", {})
+        self.solver = data.get("solver", {})
+
+    def write(self, path):
+        """Writes the file `hinf-synth solve -o PATH` would write, atomically."""
+        directory = os.path.dirname(os.path.abspath(path))
+        fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".tmp.", dir=directory)
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(self.text)
+            os.replace(tmp, path)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise
+
+    def __repr__(self):
+        return f"<hinf.SynthesisResult {self.kind} gamma={self.gamma!r}>"
+
+
+def synthesize(config):
+    """`hinf-synth solve`: the certified filter or controller of a config (path, YAML text or dict)."""
+    problem = _problem(config)
+    return SynthesisResult(_call(problem.solve))
+
+
+def analyze(config, file, delta_points=41):
+    """`hinf-synth analyze --json`: the figures of a gains or controller file on the problem, as a dict."""
+    report, text = _call(_problem(config).analyze, os.fspath(file), delta_points)
+    return json.loads(text)
+
+
+def verify(config, file):
+    """`hinf-synth verify`: (holds, report) — whether the file's claimed gamma holds for the problem."""
+    return _call(_problem(config).verify, os.fspath(file))
+
+
+def check(config, golden, rtol=1e-6):
+    """`hinf-synth check`: (same, gamma_now, report) against a golden file."""
+    return _call(_problem(config).check, os.fspath(golden), rtol)
+
+
+def export_sdpa(config):
+    """`hinf-synth export-sdpa`: the synthesis LMI in SDPA sparse format."""
+    return _call(_problem(config).export_sdpa)
+
+
+class Campaign:
+    """A Monte-Carlo campaign's run directory in memory: `files` ({name: bytes}), `summary`
+    (summary.json as a dict), and `table(name)` — a CSV file of it as a numpy structured array."""
+
+    def __init__(self, files):
+        self.files = files
+        self.summary = json.loads(files["summary.json"]) if "summary.json" in files else {}
+
+    def table(self, name):
+        text = self.files[name].decode()
+        rows = list(csv.reader(io.StringIO(text)))
+        names = rows[0]
+        columns = list(zip(*rows[1:])) if len(rows) > 1 else [[] for _ in names]
+        dtype = []
+        for n, col in zip(names, columns):
+            try:
+                np.asarray(col, dtype=float)
+                dtype.append((n, float))
+            except ValueError:
+                dtype.append((n, object))
+        out = np.empty(len(rows) - 1, dtype=dtype)
+        for (n, t), col in zip(dtype, columns):
+            out[n] = np.asarray(col, dtype=t)
+        return out
+
+    def __repr__(self):
+        return f"<hinf.Campaign {sorted(self.files)}>"
+
+
+def simulate(scenario, runs=1, seed=1, jobs=1, duration=None):
+    """`hinf-sim SCENARIO --runs N --seed S --jobs J [--duration T]` in memory (nothing written;
+    no plots)."""
+    path = os.fspath(scenario)
+    with open(path, "rb") as f:
+        text = f.read().decode()
+    return Campaign(_call(_hinf.simulate, text, path, runs, seed, jobs, duration))

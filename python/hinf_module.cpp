@@ -1,0 +1,160 @@
+// The Python module's compiled core, `hinf._hinf` (docs/python.md): pybind11 over the
+// synthesis API (synth/api.hpp) and the simulation API (sim/family.hpp), nothing else —
+// every number comes from the same library calls as the executables'. Matrices cross as
+// numpy arrays (pybind11/eigen.h copies them); errors as hinf.Error subclasses carrying the
+// executables' exit code (python/hinf/__init__.py maps them). Long jobs release the GIL.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "hinf/common/error.hpp"
+#include "hinf/sim/family.hpp"
+#include "hinf/synth/api.hpp"
+
+namespace py = pybind11;
+using hinf::synth::Problem;
+
+namespace {
+
+// A filter's matrices by the names of the gains file (the optional ones only when present).
+py::dict filter_dict(const hinf::Filter& f) {
+  py::dict d;
+  d["A_F"] = f.A_F;
+  d["B_F"] = f.B_F;
+  d["C_F"] = f.C_F;
+  if (f.D_F.size() > 0) d["D_F"] = f.D_F;
+  if (f.G_F.size() > 0) d["G_F"] = f.G_F;
+  d["form"] = f.form == hinf::FilterForm::Observer ? "observer" : "augmented";
+  return d;
+}
+
+py::dict controller_dict(const hinf::Controller& k) {
+  py::dict d;
+  d["A_K"] = k.A_K;
+  d["B_K"] = k.B_K;
+  d["C_K"] = k.C_K;
+  d["D_K"] = k.D_K;
+  return d;
+}
+
+// solve's outcome: γ, the matrices, the file's text and the report (the certificate and the
+// bracket are in the file's text, which hinf/__init__.py parses into dicts).
+py::dict solve_dict(const hinf::synth::SolveOutcome& o) {
+  py::dict d;
+  d["gamma"] = o.gamma;
+  d["file"] = o.file;
+  d["file_contents"] = o.file_contents;
+  d["report"] = o.report;
+  if (const auto* f = std::get_if<hinf::synth::SynthesisResult>(&o.result)) {
+    d["kind"] = "filter";
+    d["matrices"] = filter_dict(f->filter);
+  } else {
+    d["kind"] = "controller";
+    d["matrices"] = controller_dict(std::get<hinf::synth::ControllerSynthesisResult>(o.result).controller);
+  }
+  return d;
+}
+
+// Runs `job` without the GIL (other Python threads go on meanwhile).
+template <class Job>
+auto without_gil(Job&& job) {
+  py::gil_scoped_release release;
+  return job();
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_hinf, m) {
+  m.doc() = "compiled core of the hinf module (use `import hinf`)";
+
+  // hinf::Error crosses as (exit code, message, key); __init__.py raises the subclass.
+  static py::exception<hinf::Error> error_base(m, "NativeError");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const hinf::Error& e) {
+      py::tuple args = py::make_tuple(hinf::exit_code(e.code()), std::string(e.what()), e.key());
+      PyErr_SetObject(error_base.ptr(), args.ptr());
+    }
+  });
+
+  py::class_<Problem, std::shared_ptr<Problem>>(m, "Problem")
+      .def_property_readonly("kind", [](const Problem& p) { return std::string(p.kind()); })
+      .def_property_readonly("source", &Problem::source)
+      .def_property_readonly("sha256", &Problem::sha256)
+      .def("solve",
+           [](const Problem& p) {
+             // the centrings' ends (not every Newton step), as the iteration table shows them
+             std::vector<hinf::synth::IterationReport> log;
+             hinf::synth::JobObservers obs;
+             obs.on_iteration = [&log](const hinf::synth::IterationReport& r) {
+               if (!r.progress.newton_step && !r.progress.assembling) log.push_back(r);
+             };
+             const auto outcome = without_gil([&] { return p.solve(obs); });
+             py::dict d = solve_dict(outcome);
+             py::list iterations;
+             for (const auto& r : log) {
+               py::dict it;
+               it["stage"] = r.stage == hinf::synth::SolveStage::Backoff      ? "backoff"
+                             : r.stage == hinf::synth::SolveStage::Controller ? "controller"
+                                                                              : "synthesis";
+               it["phase"] = r.progress.phase;
+               it["centering"] = r.progress.centering;
+               it["t"] = r.progress.t;
+               it["objective"] = r.progress.objective;
+               it["gap"] = r.progress.gap;
+               it["newton"] = r.progress.newton;
+               it["elapsed_s"] = r.progress.elapsed_s;
+               iterations.append(it);
+             }
+             d["iterations"] = iterations;
+             return d;
+           })
+      .def("analyze",
+           [](const Problem& p, const std::string& file, int delta_points) {
+             const auto o = without_gil([&] { return p.analyze(file, {delta_points}); });
+             return py::make_tuple(o.report, o.json);
+           },
+           py::arg("file"), py::arg("delta_points") = 41)
+      .def("verify",
+           [](const Problem& p, const std::string& file) {
+             const auto o = without_gil([&] { return p.verify(file); });
+             return py::make_tuple(o.holds, o.report);
+           })
+      .def("check",
+           [](const Problem& p, const std::string& golden, double rtol) {
+             const auto o = without_gil([&] { return p.check(golden, rtol); });
+             return py::make_tuple(o.same, o.gamma_now, o.report);
+           })
+      .def("export_sdpa", [](const Problem& p) { return without_gil([&] { return p.export_sdpa(); }); });
+
+  m.def("parse_problem", [](const std::string& text, const std::string& name) {
+    return std::shared_ptr<Problem>(hinf::synth::parse_problem(text, name));
+  });
+  m.def("load_problem", [](const std::string& path) { return std::shared_ptr<Problem>(hinf::synth::load_problem(path)); });
+
+  // One Monte-Carlo campaign in memory: the run directory's files as {name: text}.
+  m.def(
+      "simulate",
+      [](const std::string& text, const std::string& path, long runs, std::uint64_t seed, int jobs,
+         std::optional<double> duration) {
+        hinf::sim::CampaignRequest request;
+        request.scenario_text = text;
+        request.scenario_path = path;
+        request.runs = runs;
+        request.seed = seed;
+        request.jobs = jobs;
+        request.duration = duration;
+        const hinf::sim::CampaignResult result = without_gil([&] { return hinf::sim::simulate(request); });
+        py::dict files;
+        for (const auto& [name, bytes] : result.files) files[py::str(name)] = py::bytes(bytes);
+        return files;
+      },
+      py::arg("text"), py::arg("path"), py::arg("runs") = 1, py::arg("seed") = 1, py::arg("jobs") = 1,
+      py::arg("duration") = py::none());
+}

@@ -1,0 +1,108 @@
+"""The Python module against the executables (docs/python.md): the same files byte for byte
+(timing apart), the same matrices, the same errors with the same exit codes and messages.
+Run by CTest with PYTHONPATH=<build>/python, HINF_SYNTH and HINF_SIM the executables."""
+import os
+import re
+import subprocess
+
+import numpy as np
+import pytest
+import yaml
+
+import hinf
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SYNTH = os.environ.get("HINF_SYNTH", os.path.join(ROOT, "build", "bin", "hinf-synth"))
+SIM = os.environ.get("HINF_SIM", os.path.join(ROOT, "build", "bin", "hinf-sim"))
+TIMING = re.compile(r"solve_time_s|wall_s|elapsed|_seconds")
+
+
+def timing_apart(text):
+    return "\n".join(line for line in text.splitlines() if not TIMING.search(line))
+
+
+def path(*parts):
+    return os.path.join(ROOT, *parts)
+
+
+def solve_cli(config, out):
+    run = subprocess.run([SYNTH, "solve", config, "-o", str(out)], capture_output=True, text=True)
+    return run
+
+
+@pytest.mark.parametrize("config", ["configs/paper-dbar0.05.yaml", "configs/paper-no-control-filtered.yaml",
+                                    "tests/data/controllers/double-integrator.yaml"])
+def test_synthesize_writes_the_executables_file(config, tmp_path):
+    r = hinf.synthesize(path(config))
+    run = solve_cli(path(config), tmp_path / "out.yaml")
+    assert run.returncode == 0, run.stderr
+    on_disk = (tmp_path / "out.yaml").read_text()
+    assert timing_apart(r.text) == timing_apart(on_disk)
+    data = yaml.safe_load(on_disk)
+    assert r.gamma == data["gamma"]
+    section = data["filter"] if r.kind == "filter" else data["controller"]
+    for name, value in r.matrices.items():  # numpy arrays, every bit the file's
+        assert isinstance(value, np.ndarray)
+        np.testing.assert_array_equal(value, np.array(section[name], dtype=float))
+    assert r.certificate["passed"] is True
+    assert r.iterations and all(it["t"] > 0 for it in r.iterations)
+    written = tmp_path / "again.yaml"
+    r.write(written)
+    assert written.read_text() == r.text
+
+
+def test_a_dict_of_arrays_is_the_same_problem_as_its_yaml():
+    cfg = yaml.safe_load(open(path("configs", "example-matrices.yaml")).read())
+    as_arrays = {k: ({kk: np.array(vv) if isinstance(vv, list) else vv for kk, vv in v.items()} if isinstance(v, dict) else v)
+                 for k, v in cfg.items()}
+    assert hinf.synthesize(as_arrays).gamma == hinf.synthesize(path("configs", "example-matrices.yaml")).gamma
+
+
+@pytest.mark.parametrize("config, code", [("tests/data/bad-configs/duplicate-key.yaml", 2),
+                                          ("tests/data/ill-posed/unstable-plant.yaml", 3),
+                                          ("tests/data/controllers/bad-unstabilisable.yaml", 3)])
+def test_errors_carry_the_executables_exit_code_and_message(config, code, tmp_path):
+    run = solve_cli(path(config), tmp_path / "out.yaml")
+    assert run.returncode == code
+    with pytest.raises(hinf.Error) as err:
+        hinf.synthesize(path(config))
+    assert err.value.exit_code == code
+    assert type(err.value) is {2: hinf.InvalidInput, 3: hinf.Infeasible}[code]
+    assert str(err.value) in run.stderr
+
+
+def test_yaml_text_that_is_no_config_is_invalid_input():
+    with pytest.raises(hinf.InvalidInput):
+        hinf.synthesize("just: text\nnothing: here\n")
+
+
+def test_analyze_verify_check_export(tmp_path):
+    config = path("configs", "paper-dbar0.05.yaml")
+    golden = path("tests", "golden", "paper-dbar0.05.yaml")
+    figures = hinf.analyze(config, golden)
+    cli = subprocess.run([SYNTH, "analyze", config, golden, "--json"], capture_output=True, text=True)
+    assert cli.returncode == 0
+    assert figures == yaml.safe_load(cli.stdout.strip().splitlines()[-1])
+    holds, report = hinf.verify(config, golden)
+    assert holds and "holds" in report
+    same, gamma_now, _ = hinf.check(config, golden)
+    assert same and abs(gamma_now - yaml.safe_load(open(golden))["gamma"]) <= 1e-6 * gamma_now
+    out = tmp_path / "lmi.dat-s"
+    assert subprocess.run([SYNTH, "export-sdpa", config, "-o", str(out)]).returncode == 0
+    assert hinf.export_sdpa(config) == out.read_text()
+
+
+def test_simulate_gives_the_executables_run_directory(tmp_path):
+    scenario = path("configs", "scenarios", "paper-no-control.yaml")
+    c = hinf.simulate(scenario, runs=2, seed=7, duration=300)
+    out = tmp_path / "run"
+    cli = subprocess.run([SIM, scenario, "--out", str(out), "--runs", "2", "--seed", "7", "--no-plots", "--quiet",
+                          "--duration", "300"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    on_disk = sorted(p.name for p in out.iterdir() if p.suffix != ".png")
+    assert sorted(c.files) == on_disk
+    for name, data in c.files.items():
+        assert timing_apart(data.decode()) == timing_apart((out / name).read_text()), name
+    runs = c.table("runs.csv")
+    assert len(runs) == 2
+    assert c.summary
