@@ -12,9 +12,14 @@
 #include <string>
 #include <variant>
 
+#include "hinf/codegen/codegen.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/runtime/lti_filter.hpp"
+#include "hinf/runtime_yaml/gains_file.hpp"
+#include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
 #include "hinf/sim/family.hpp"
 #include "hinf/synth/api.hpp"
+#include "hinf/synth/gains_output.hpp"
 
 namespace py = pybind11;
 using hinf::synth::Problem;
@@ -58,6 +63,27 @@ py::dict solve_dict(const hinf::synth::SolveOutcome& o) {
     d["matrices"] = controller_dict(std::get<hinf::synth::ControllerSynthesisResult>(o.result).controller);
   }
   return d;
+}
+
+using hinf::runtime::LtiFilter;
+
+// The filter driven over a whole record (rows are samples: Y is N×m, U N×r), z_F(k) as the
+// rows of the result — the loop in C++, without the GIL.
+Eigen::MatrixXd run_filter(LtiFilter& f, const Eigen::MatrixXd& Y, const std::optional<Eigen::MatrixXd>& U) {
+  if (Y.cols() != f.m())
+    throw std::invalid_argument("Y must have m = " + std::to_string(f.m()) + " columns (one row per sample); got " +
+                                std::to_string(Y.cols()));
+  if (U && (U->rows() != Y.rows() || U->cols() != f.r()))
+    throw std::invalid_argument("U must be " + std::to_string(Y.rows()) + "x" + std::to_string(f.r()) +
+                                " (one row per sample of Y); got " + std::to_string(U->rows()) + "x" +
+                                std::to_string(U->cols()));
+  Eigen::MatrixXd Z(Y.rows(), f.l());
+  py::gil_scoped_release release;
+  for (Eigen::Index k = 0; k < Y.rows(); ++k) {
+    const Eigen::VectorXd y = Y.row(k).transpose();
+    Z.row(k) = U ? f.step(y, U->row(k).transpose()).transpose() : f.step(y).transpose();
+  }
+  return Z;
 }
 
 // Runs `job` without the GIL (other Python threads go on meanwhile).
@@ -131,7 +157,62 @@ PYBIND11_MODULE(_hinf, m) {
              const auto o = without_gil([&] { return p.check(golden, rtol); });
              return py::make_tuple(o.same, o.gamma_now, o.report);
            })
-      .def("export_sdpa", [](const Problem& p) { return without_gil([&] { return p.export_sdpa(); }); });
+      .def("export_sdpa", [](const Problem& p) { return without_gil([&] { return p.export_sdpa(); }); })
+      .def("kalman", [](const Problem& p) {
+        py::dict d = solve_dict(without_gil([&] { return p.kalman(); }));
+        d["iterations"] = py::list();
+        return d;
+      });
+
+  // The runtime's fixed-gain filter (runtime/lti_filter.hpp), loaded as flight code loads it
+  // (runtime_yaml::make_lti_filter: D_F and G_F included).
+  py::class_<LtiFilter>(m, "LtiFilter")
+      .def_static("from_text",
+                  [](const std::string& text, const std::string& name) {
+                    return hinf::runtime_yaml::make_lti_filter(hinf::runtime_yaml::parse_gains_yaml(text, name), name);
+                  })
+      .def_static("from_file",
+                  [](const std::string& path) {
+                    return hinf::runtime_yaml::make_lti_filter(hinf::runtime_yaml::load_gains_file(path), path);
+                  })
+      .def_property_readonly("n", &LtiFilter::n)
+      .def_property_readonly("m", &LtiFilter::m)
+      .def_property_readonly("l", &LtiFilter::l)
+      .def_property_readonly("r", &LtiFilter::r)
+      .def_property_readonly("state", [](const LtiFilter& f) { return Eigen::VectorXd(f.x_F()); })
+      .def("init", [](LtiFilter& f, const Eigen::VectorXd& z0) { f.init(z0); }, py::arg("z0"))
+      .def("set_state", [](LtiFilter& f, const Eigen::VectorXd& x) { f.set_state(x); }, py::arg("x_F"))
+      .def("step", [](LtiFilter& f, const Eigen::VectorXd& y) { return Eigen::VectorXd(f.step(y)); }, py::arg("y"))
+      .def("step", [](LtiFilter& f, const Eigen::VectorXd& y, const Eigen::VectorXd& u) { return Eigen::VectorXd(f.step(y, u)); },
+           py::arg("y"), py::arg("u"))
+      .def("run", &run_filter, py::arg("Y"), py::arg("U") = py::none());
+
+  // `hinf-synth codegen`: the four C99 files of a gains or controller file's text, in memory
+  // ({name: text}); written into `out` (atomically, never over an input) when given.
+  m.def(
+      "codegen",
+      [](const std::string& text, const std::string& path, const std::string& prefix, const std::string& real,
+         int vector_steps, std::optional<double> tustin, std::optional<std::string> out) {
+        hinf::codegen::CodegenOptions options;
+        options.prefix = prefix;
+        if (real != "double" && real != "float")
+          throw hinf::Error(hinf::ErrorCode::InvalidInput, "real = '" + real + "': must be 'double' or 'float'", "real");
+        options.real = real == "float" ? hinf::codegen::CodegenOptions::Real::Float : hinf::codegen::CodegenOptions::Real::Double;
+        options.generator = std::string("hinf-synth ") + hinf::synth::tool_version();
+        options.vector_steps = vector_steps;
+        options.tustin_period = tustin;
+        const hinf::codegen::GeneratedFiles files = without_gil([&] {
+          hinf::codegen::validate_codegen_prefix(options.prefix);
+          hinf::codegen::GeneratedFiles g = hinf::codegen::generate_c_for_file(text, path, options);
+          if (out) hinf::codegen::write_generated_files(g, *out, {path});
+          return g;
+        });
+        py::dict d;
+        for (const auto& f : files.files) d[py::str(f.name)] = f.contents;
+        return d;
+      },
+      py::arg("text"), py::arg("path"), py::arg("prefix"), py::arg("real") = "double", py::arg("vector_steps") = 50,
+      py::arg("tustin") = py::none(), py::arg("out") = py::none());
 
   m.def("parse_problem", [](const std::string& text, const std::string& name) {
     return std::shared_ptr<Problem>(hinf::synth::parse_problem(text, name));

@@ -5,7 +5,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
-#include "hinf/synth/gains_output.hpp"
+#include "hinf/synth/api.hpp"
 
 namespace hinf::cli {
 
@@ -19,13 +19,9 @@ void add_kalman(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", *output, "gains YAML to write (atomically)")->required();
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::SynthConfig cfg = synth::load_config(*config);
-      const synth::SynthesisResult r = synth::kalman_predictor(cfg.plant, cfg.settings, cfg.kalman_noise);
-      hinf::write_file_atomic(*output, synth::format_gains_yaml(r, {*config, cfg.sha256, cfg.sample_time()}), {*config});
-      std::cout << (r.filter.filtered() ? "Kalman filter x_hat(k|k)" : "Kalman predictor")
-                << ": worst-case gain gamma = " << num(r.gamma) << " (certified; nominal Hinf norm "
-                << num(r.certificate.hinf_norm_nominal) << "), RMS error under unit white noise (H2 norm) "
-                << num(r.certificate.h2_norm_nominal) << "; gains written to " << *output << "\n";
+      const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
+      hinf::write_file_atomic(*output, r.file, {*config});
+      std::cout << r.report << r.file_contents << " written to " << *output << "\n";
       return 0;
     };
   });

@@ -23,7 +23,8 @@ import yaml
 
 from . import _hinf
 
-__all__ = ["synthesize", "analyze", "verify", "check", "export_sdpa", "simulate", "Error", "CheckFailed",
+__all__ = ["synthesize", "kalman", "analyze", "verify", "check", "export_sdpa", "codegen", "simulate", "lti_filter",
+           "Error", "CheckFailed",
            "InvalidInput", "Infeasible", "NumericalFailure", "SynthesisResult", "Campaign"]
 
 
@@ -132,6 +133,26 @@ def synthesize(config):
     return SynthesisResult(_call(problem.solve))
 
 
+def kalman(config):
+    """`hinf-synth kalman`: the Kalman predictor (or filter x_hat(k|k)) of a filter config's nominal
+    plant, certified at the worst-case gain it achieves, as a SynthesisResult."""
+    return SynthesisResult(_call(_problem(config).kalman))
+
+
+def codegen(gains, prefix, real="double", vector_steps=50, tustin=None, out=None):
+    """`hinf-synth codegen`: the C99 files (NAME.h, NAME.c, NAME_vectors.h, NAME_check.c) of a gains
+    or controller file (a path, or a SynthesisResult) as {name: text}; also written into the
+    directory `out` when given (atomically, never over an input)."""
+    if isinstance(gains, SynthesisResult):
+        text, source = gains.text, "<result>"
+    else:
+        source = os.fspath(gains)
+        with open(source, "rb") as f:
+            text = f.read().decode()
+    return _call(_hinf.codegen, text, source, prefix, real, vector_steps, tustin,
+                 None if out is None else os.fspath(out))
+
+
 def analyze(config, file, delta_points=41):
     """`hinf-synth analyze --json`: the figures of a gains or controller file on the problem, as a dict."""
     report, text = _call(_problem(config).analyze, os.fspath(file), delta_points)
@@ -189,3 +210,17 @@ def simulate(scenario, runs=1, seed=1, jobs=1, duration=None):
     with open(path, "rb") as f:
         text = f.read().decode()
     return Campaign(_call(_hinf.simulate, text, path, runs, seed, jobs, duration))
+
+
+def lti_filter(gains):
+    """The runtime's fixed-gain filter (runtime/lti_filter.hpp), loaded as flight code loads it,
+    from a gains file's path, a filter's SynthesisResult, or gains YAML text:
+    `step(y)` (or `step(y, u)` with a known input) → z_F(k); `run(Y[, U])` → Z over a record
+    (rows are samples); `init(z0)`, `set_state(x_F)`, `state`, and the sizes n, m, l, r."""
+    if isinstance(gains, SynthesisResult):
+        if gains.kind != "filter":
+            raise InvalidInput("lti_filter: a controller is not a filter (its file is hinf-controller/1)")
+        return _call(_hinf.LtiFilter.from_text, gains.text, "<result>")
+    if isinstance(gains, os.PathLike) or (isinstance(gains, str) and "\n" not in gains):
+        return _call(_hinf.LtiFilter.from_file, os.fspath(gains))
+    return _call(_hinf.LtiFilter.from_text, gains, "<text>")

@@ -9,12 +9,16 @@
 # Then `sweep`: a grid of the uncertainty scale (δ̄/0.05) with exit 0 below the boundary and
 # 3 above at every point, --max-feasible bracketing it, and bad sweep options exit 2 with
 # nothing written.
+# With a third argument `quick` (the sanitizer build's sibling of this `heavy` test): the
+# same steps on fewer points — δ̄ 0.05 and 0.07, a sweep of two points, --max-feasible to 0.1.
 set -u
-exe=$1 plant=$2
+exe=$1 plant=$2 mode=${3:-full}
+cases="0.03:0 0.05:0 0.058:0 0.0595:3 0.07:3 0.3:3 0.6:3 0.8:3" grid=0:0.1:2 points=21 tol=1e-3
+[ "$mode" = quick ] && cases="0.05:0 0.07:3" grid=1:1:2 points=2 tol=0.1
 work=$(mktemp -d "${TMPDIR:-/tmp}/hinf-boundary-XXXXXX")
 trap 'rm -rf "$work"' EXIT
 fail=0
-for case in 0.03:0 0.05:0 0.058:0 0.0595:3 0.07:3 0.3:3 0.6:3 0.8:3; do
+for case in $cases; do
   d=${case%:*} want=${case#*:}
   sed "s/\[\[0.05, -0.05, 0, 0\]\]/[[$d, -$d, 0, 0]]/" "$plant" > "$work/p-$d.yaml"
   grep -q "\[\[$d, -$d" "$work/p-$d.yaml" || { echo "FAIL: could not set delta_bar $d"; fail=1; continue; }
@@ -28,26 +32,26 @@ for case in 0.03:0 0.05:0 0.058:0 0.0595:3 0.07:3 0.3:3 0.6:3 0.8:3; do
 done
 
 # sweep: scale s = delta_bar / 0.05; the boundary is s* = 0.058988 / 0.05 = 1.17976
-"$exe" sweep "$plant" --param uncertainty_scale=0:0.1:2 -o "$work/s.csv" --json "$work/s.json" --plot "$work/s.png" \
+"$exe" sweep "$plant" --param uncertainty_scale=$grid -o "$work/s.csv" --json "$work/s.json" --plot "$work/s.png" \
   > "$work/out" 2>&1
 rc=$?
 [ "$rc" -eq 0 ] || { echo "FAIL: sweep exit $rc"; cat "$work/out"; fail=1; }
 bad=$(awk -F, 'NR > 1 { want = ($2 < 1.17976) ? 0 : 3; if ($4 != want) print $2 ": exit " $4 " (expected " want ")" }' "$work/s.csv")
 [ -z "$bad" ] || { echo "FAIL: sweep grid: $bad"; fail=1; }
-[ "$(grep -c '^uncertainty_scale,' "$work/s.csv")" -eq 21 ] || { echo "FAIL: sweep: not 21 points"; cat "$work/s.csv"; fail=1; }
+[ "$(grep -c '^uncertainty_scale,' "$work/s.csv")" -eq "$points" ] || { echo "FAIL: sweep: not $points points"; cat "$work/s.csv"; fail=1; }
 [ -s "$work/s.png" ] || { echo "FAIL: sweep --plot wrote no PNG"; fail=1; }
 [ -z "$(ls "$work" | grep -v -x -e out -e 's.csv' -e 's.json' -e 's.png' -e 'p-.*' -e 'g-.*')" ] ||
   { echo "FAIL: sweep left files: $(ls "$work")"; fail=1; }
 grep -q '"exit_code": 3' "$work/s.json" || { echo "FAIL: sweep --json without the infeasible points"; fail=1; }
-"$exe" sweep "$plant" --max-feasible uncertainty_scale=0:2 --tolerance 1e-3 --json "$work/m.json" > "$work/out" 2>&1
+"$exe" sweep "$plant" --max-feasible uncertainty_scale=0:2 --tolerance "$tol" --json "$work/m.json" > "$work/out" 2>&1
 rc=$?
 [ "$rc" -eq 0 ] || { echo "FAIL: --max-feasible exit $rc"; cat "$work/out"; fail=1; }
 line=$(grep '^verified infeasible' "$work/out")
 lo=$(echo "$line" | sed -n 's/.*lies in \[\([0-9.]*\), \([0-9.]*\)\].*/\1/p')
 hi=$(echo "$line" | sed -n 's/.*lies in \[\([0-9.]*\), \([0-9.]*\)\].*/\2/p')
 echo "--max-feasible: boundary in [$lo, $hi]"
-awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo != "" && lo < 1.17976 && hi > 1.17976 && (hi - lo) * 0.05 <= 1e-3) }' ||
-  { echo "FAIL: --max-feasible does not bracket delta_bar 0.058988 to 1e-3"; cat "$work/out"; fail=1; }
+awk -v lo="$lo" -v hi="$hi" -v tol="$tol" 'BEGIN { exit !(lo != "" && lo < 1.17976 && hi > 1.17976 && (hi - lo) * 0.05 <= tol) }' ||
+  { echo "FAIL: --max-feasible does not bracket delta_bar 0.058988 to $tol"; cat "$work/out"; fail=1; }
 for args in "--param nosuchkey=0:1:2" "--param system.A=0:1:2" "--param uncertainty_scale=1:0:2" \
             "--param uncertainty_scale=-1:1:1" "--max-feasible uncertainty_scale=1" "--param delta_bar=0:0.1:1" \
             "--param uncertainty_scale=0:1:2 --max-feasible uncertainty_scale=0:2"; do

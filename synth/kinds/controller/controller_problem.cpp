@@ -59,6 +59,12 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
                                "\nminimise the scaled gamma; the SDPA dual objective is its optimum");
   }
 
+  SolveOutcome kalman() const override {
+    throw Error(ErrorCode::InvalidInput,
+                "kalman: " + cfg_.path + " declares a controller (controller:); the Kalman reference is of a filter "
+                "config's plant (system: or hill:)", "controller");
+  }
+
  private:
   struct Loaded {
     runtime_yaml::ControllerFile file;

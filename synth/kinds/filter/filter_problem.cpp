@@ -46,6 +46,12 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
     return {cmp.same(), now.gamma, filter_report::check(in.gains, cfg_.sha256, now.gamma, cmp, rtol), std::move(cmp)};
   }
 
+  SolveOutcome kalman() const override {
+    SynthesisResult r = kalman_predictor(cfg_.plant, cfg_.settings, cfg_.kalman_noise);
+    return {r.gamma, format_gains_yaml(r, {cfg_.path, cfg_.sha256, cfg_.sample_time()}), "gains",
+            filter_report::kalman(r), std::move(r)};
+  }
+
   std::string export_sdpa() const override {
     return synthesis_sdpa(cfg_.plant, cfg_.settings,
                           "from " + cfg_.path + " (sha256 " + cfg_.sha256 + "), by hinf-synth " + tool_version() +

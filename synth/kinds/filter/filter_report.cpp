@@ -98,6 +98,13 @@ std::string solve(const SynthesisResult& r) {
          (r.filter.filtered() ? ", filtered estimate" : "") + "; " + r.bound + "\n";
 }
 
+std::string kalman(const SynthesisResult& r) {
+  return std::string(r.filter.filtered() ? "Kalman filter x_hat(k|k)" : "Kalman predictor") +
+         ": worst-case gain gamma = " + num(r.gamma) + " (certified; nominal Hinf norm " +
+         num(r.certificate.hinf_norm_nominal) + "), RMS error under unit white noise (H2 norm) " +
+         num(r.certificate.h2_norm_nominal) + "\n";
+}
+
 std::string analysis(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,
                      std::optional<double> T, bool uncertain) {
   std::string out =

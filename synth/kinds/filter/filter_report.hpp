@@ -21,6 +21,7 @@ void log_before_solve(const Plant& plant, const Settings& settings, const LogLin
 void log_after_solve(const SolverInfo& solver, const LogLine& log);
 
 std::string solve(const SynthesisResult& r);
+std::string kalman(const SynthesisResult& r);
 std::string analysis(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,
                      std::optional<double> sample_time, bool uncertain);
 std::string analysis_json(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,

@@ -86,6 +86,11 @@ class Problem {
   virtual CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers = {}) const = 0;
   // The synthesis LMI in SDPA sparse format (for CSDP, SDPA, …), with provenance comments.
   virtual std::string export_sdpa() const = 0;
+  // `kalman`: the Kalman one-step predictor of the nominal plant (the Kalman filter x̂(k|k)
+  // for a filtered estimate; the config's `kalman: {Q, R}` or B Bᵀ, D Dᵀ), certified at the
+  // worst-case gain it achieves — the H2 reference beside the H∞ design, as a gains file.
+  // Error(InvalidInput) for a kind without one (a controller config).
+  virtual SolveOutcome kalman() const = 0;
 };
 
 // Parses config text of any kind; `source_name` names it in messages and in the outputs'
