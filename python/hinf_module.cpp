@@ -14,6 +14,7 @@
 
 #include "hinf/codegen/codegen.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/common/input_file.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
@@ -187,11 +188,12 @@ PYBIND11_MODULE(_hinf, m) {
            py::arg("y"), py::arg("u"))
       .def("run", &run_filter, py::arg("Y"), py::arg("U") = py::none());
 
-  // `hinf-synth codegen`: the four C99 files of a gains or controller file's text, in memory
-  // ({name: text}); written into `out` (atomically, never over an input) when given.
+  // `hinf-synth codegen`: the four C99 files of a gains or controller file (its text, or read
+  // from `path` as the executable reads it when `text` is None), in memory ({name: text});
+  // written into `out` (atomically, never over an input) when given.
   m.def(
       "codegen",
-      [](const std::string& text, const std::string& path, const std::string& prefix, const std::string& real,
+      [](std::optional<std::string> text, const std::string& path, const std::string& prefix, const std::string& real,
          int vector_steps, std::optional<double> tustin, std::optional<std::string> out) {
         hinf::codegen::CodegenOptions options;
         options.prefix = prefix;
@@ -202,8 +204,9 @@ PYBIND11_MODULE(_hinf, m) {
         options.vector_steps = vector_steps;
         options.tustin_period = tustin;
         const hinf::codegen::GeneratedFiles files = without_gil([&] {
-          hinf::codegen::validate_codegen_prefix(options.prefix);
-          hinf::codegen::GeneratedFiles g = hinf::codegen::generate_c_for_file(text, path, options);
+          hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
+          if (!text) text = hinf::read_input_file(path, "gains or controller file", hinf::kMaxGainsBytes);
+          hinf::codegen::GeneratedFiles g = hinf::codegen::generate_c_for_file(*text, path, options);
           if (out) hinf::codegen::write_generated_files(g, *out, {path});
           return g;
         });
@@ -219,13 +222,13 @@ PYBIND11_MODULE(_hinf, m) {
   });
   m.def("load_problem", [](const std::string& path) { return std::shared_ptr<Problem>(hinf::synth::load_problem(path)); });
 
-  // One Monte-Carlo campaign in memory: the run directory's files as {name: text}.
+  // One Monte-Carlo campaign in memory (the scenario read as hinf-sim reads it): the run
+  // directory's files as {name: bytes}.
   m.def(
       "simulate",
-      [](const std::string& text, const std::string& path, long runs, std::uint64_t seed, int jobs,
-         std::optional<double> duration) {
+      [](const std::string& path, long runs, std::uint64_t seed, int jobs, std::optional<double> duration) {
         hinf::sim::CampaignRequest request;
-        request.scenario_text = text;
+        request.scenario_text = hinf::read_input_file(path, "scenario", hinf::kMaxScenarioBytes);
         request.scenario_path = path;
         request.runs = runs;
         request.seed = seed;
@@ -236,6 +239,6 @@ PYBIND11_MODULE(_hinf, m) {
         for (const auto& [name, bytes] : result.files) files[py::str(name)] = py::bytes(bytes);
         return files;
       },
-      py::arg("text"), py::arg("path"), py::arg("runs") = 1, py::arg("seed") = 1, py::arg("jobs") = 1,
+      py::arg("path"), py::arg("runs") = 1, py::arg("seed") = 1, py::arg("jobs") = 1,
       py::arg("duration") = py::none());
 }

@@ -83,8 +83,8 @@ def _problem(config):
     if isinstance(config, dict):
         # JSON is YAML; json.dumps writes every float with the digits that read it back exactly
         return _call(_hinf.parse_problem, json.dumps(_plain(config), allow_nan=False), "<dict>")
-    if isinstance(config, os.PathLike) or (isinstance(config, str) and "\n" not in config and os.path.exists(config)):
-        return _call(_hinf.load_problem, os.fspath(config))
+    if isinstance(config, os.PathLike) or (isinstance(config, str) and "\n" not in config):
+        return _call(_hinf.load_problem, os.fspath(config))  # a one-line string is a path
     if isinstance(config, str):
         return _call(_hinf.parse_problem, config, "<text>")
     raise InvalidInput("config: expected a path, YAML text or a dict, got " + type(config).__name__)
@@ -146,9 +146,7 @@ def codegen(gains, prefix, real="double", vector_steps=50, tustin=None, out=None
     if isinstance(gains, SynthesisResult):
         text, source = gains.text, "<result>"
     else:
-        source = os.fspath(gains)
-        with open(source, "rb") as f:
-            text = f.read().decode()
+        text, source = None, os.fspath(gains)  # read by the library, as the executable reads it
     return _call(_hinf.codegen, text, source, prefix, real, vector_steps, tustin,
                  None if out is None else os.fspath(out))
 
@@ -206,10 +204,7 @@ class Campaign:
 def simulate(scenario, runs=1, seed=1, jobs=1, duration=None):
     """`hinf-sim SCENARIO --runs N --seed S --jobs J [--duration T]` in memory (nothing written;
     no plots)."""
-    path = os.fspath(scenario)
-    with open(path, "rb") as f:
-        text = f.read().decode()
-    return Campaign(_call(_hinf.simulate, text, path, runs, seed, jobs, duration))
+    return Campaign(_call(_hinf.simulate, os.fspath(scenario), runs, seed, jobs, duration))
 
 
 def lti_filter(gains):

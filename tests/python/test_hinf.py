@@ -175,3 +175,12 @@ def test_codegen_gives_the_executables_files(gains, options, tmp_path):
         assert (tmp_path / "py" / name).read_text() == text, name
     with pytest.raises(hinf.InvalidInput):
         hinf.codegen(path(gains), "int")  # a C keyword
+
+
+@pytest.mark.parametrize("call", [lambda p: hinf.synthesize(p), lambda p: hinf.simulate(p),
+                                  lambda p: hinf.codegen(p, "nav"), lambda p: hinf.lti_filter(p)])
+def test_a_missing_file_is_invalid_input_naming_it(call, tmp_path):
+    missing = str(tmp_path / "no-such-file.yaml")
+    with pytest.raises(hinf.InvalidInput) as err:
+        call(missing)
+    assert err.value.exit_code == 2 and "no-such-file.yaml" in str(err.value)
