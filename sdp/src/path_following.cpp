@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "damped_newton.hpp"
 #include "ipopt_centering.hpp"
@@ -21,6 +22,12 @@ using Eigen::VectorXd;
 // weight keeps the phase-I centre from drifting to huge objective values).
 constexpr double kPhase1Radius = 1e8;
 constexpr double kPhase1Weight = 1e-3;
+// A point this far out in its ball (‖x‖ ≥ this·ρ) is the ball's: phase I's smallest s, or
+// phase II's optimum, is then taken on the sphere, and a wider ball may hold a better one.
+// Phase I is then run again in a ball kPhase1Growth times wider, up to ρ_b (docs/maths.md
+// §5.5); phase II's caller may widen ρ_b (minimize_in_wider_balls, §4.3).
+constexpr double kBallBoundFraction = 0.5;
+constexpr double kPhase1Growth = 1e4;
 // Phase I without the objective penalty ends as infeasible once s − gap > 0 and the gap
 // is within this fraction of s: a point that close to its centre gives a tight,
 // verifiable dual certificate (docs/maths.md (118)); the first s − gap > 0 alone is often
@@ -55,6 +62,11 @@ constexpr int kPredictorHalvings = 40;
 constexpr double kInitialTFraction = 1e-3;
 // Floors of |objective| in relative quantities (an objective of 0 is possible).
 constexpr double kObjectiveFloor = 1e-12;
+// The scale of an objective: the callers equilibrate their LMIs (docs/maths.md §4.4), so γ
+// or γ² is of order 1 unless the problem makes it large; a wider ball's point that lowers
+// the objective by less than relative_gap_tol·max(|objective|, this) is the same optimum,
+// further out (γ* = 0 approached only at infinity: 1e-8 in one ball, 1e-12 in the next).
+constexpr double kObjectiveScale = 1;
 constexpr double kInitialObjectiveFloor = 1e-8;
 
 using Clock = std::chrono::steady_clock;
@@ -105,6 +117,7 @@ class PathFollower {
 
  private:
   bool find_feasible(VectorXd& x);
+  bool find_feasible_in_ball(VectorXd& x, double lmax, double r1);
   // Runs one barrier along its central path from z; true when it ended as it should
   // (phase I: a strictly feasible point; phase II: the gap goal). z is the final point.
   bool follow(LogDetBarrier& b, VectorXd& z, Phase phase);
@@ -401,7 +414,8 @@ bool PathFollower::follow(LogDetBarrier& b, VectorXd& z, Phase phase) {
 }
 
 // Phase I, if x is not already strictly feasible: minimise s + η·cᵀx with
-// M(x) + εI ⪯ sI, first with η = kPhase1Weight, then with η = 0.
+// M(x) + εI ⪯ sI, first with η = kPhase1Weight, then with η = 0; in wider balls while
+// its infeasibility is the ball's (docs/maths.md §5.5).
 bool PathFollower::find_feasible(VectorXd& x) {
   const int N = lmi_.order();
   Eigen::MatrixXd M = lmi_.evaluate(x);
@@ -411,7 +425,25 @@ bool PathFollower::find_feasible(VectorXd& x) {
   if (lmax < 0) return true;
   // A small ball in phase I keeps its analytic centre near x0 instead of at the
   // feasibility radius (which would make phase II start with huge variables).
-  const double r1 = std::min(opt_.feasibility_radius, kPhase1Radius);
+  const VectorXd x0 = x;
+  for (double r1 = std::min(opt_.feasibility_radius, kPhase1Radius);;
+       r1 = std::min(r1 * kPhase1Growth, opt_.feasibility_radius)) {
+    sol_.status = Status::NotRun;
+    sol_.detail.clear();
+    x = x0;
+    const bool ok = find_feasible_in_ball(x, lmax, r1);
+    sol_.ball_bound = sol_.status == Status::Infeasible && x.norm() >= kBallBoundFraction * r1;
+    if (ok || !sol_.ball_bound || r1 >= opt_.feasibility_radius || out_of_budget()) {
+      if (sol_.ball_bound && sol_.status == Status::Infeasible)
+        sol_.detail += "; phase I's last point lies on its ball ‖x‖ < " + three_digits(r1) +
+                       ": a wider ball may hold a strictly feasible point";
+      return ok;
+    }
+  }
+}
+
+// Phase I in the ball ‖x‖ < r1 from x (λ_max(M(x) + εI) = lmax): x becomes its last point.
+bool PathFollower::find_feasible_in_ball(VectorXd& x, double lmax, double r1) {
   VectorXd z(n_ + 1);
   bool ok = false;
   for (double eta : {kPhase1Weight, 0.0}) {
@@ -435,6 +467,7 @@ bool PathFollower::find_feasible(VectorXd& x) {
 
 Solution PathFollower::solve(const VectorXd& x0) {
   VectorXd x = x0.size() == n_ ? x0 : VectorXd::Zero(n_);
+  sol_.feasibility_radius = opt_.feasibility_radius;
   if (!find_feasible(x)) {
     sol_.x = x;
     sol_.elapsed_s = seconds_since(start_);
@@ -452,6 +485,8 @@ Solution PathFollower::solve(const VectorXd& x0) {
     return sol_;
   }
   sol_.status = stopped_short_ ? Status::StoppedShort : Status::Solved;
+  // the ball, not the LMI, may bound the objective there (docs/maths.md §4.3)
+  sol_.ball_bound = x.norm() >= kBallBoundFraction * opt_.feasibility_radius;
   sol_.relative_gap = sol_.gap / std::max(std::abs(sol_.objective), 1e-300);
   return sol_;
 }
@@ -462,6 +497,43 @@ Solution minimize_linear(const lmi::LmiProblem& lmi, const VectorXd& c, const Op
                          const VectorXd& x0, const ProgressObserver& observer) {
   PathFollower follower(lmi, c, options, observer);
   return follower.solve(x0);
+}
+
+Solution minimize_in_wider_balls(const lmi::LmiProblem& lmi, const VectorXd& c, const Options& options,
+                                 WiderBallsWhen when, const ProgressObserver& observer, double max_radius) {
+  const Clock::time_point start = Clock::now();
+  Options o = options;
+  Solution sol = minimize_linear(lmi, c, o, VectorXd(), observer);
+  std::optional<Solution> best;
+  // a wider ball's point replaces the best only if it is Solved where the best is not, or
+  // lowers the objective by more than the tolerance (else it is the same optimum, further out)
+  bool replaced = false;
+  const auto keep_best = [&] {
+    replaced = false;
+    if (!has_point(sol.status)) return;
+    const double noise = options.relative_gap_tol * (best ? std::max(std::abs(best->objective), kObjectiveScale) : 0);
+    if (!best || (sol.status == Status::Solved && best->status != Status::Solved) ||
+        sol.objective < best->objective - noise) {
+      best = sol;
+      replaced = true;
+    }
+  };
+  keep_best();
+  // a point on the ball is tried in a wider one until a wider ball stops improving it
+  const auto worth_a_wider_ball = [&] {
+    return sol.status == Status::NumericalError ||
+           (when == WiderBallsWhen::FailedOrStoppedShort && sol.status == Status::StoppedShort) ||
+           (sol.status == Status::Infeasible && sol.ball_bound) || (has_point(sol.status) && sol.ball_bound && replaced);
+  };
+  max_radius = std::min(max_radius, kMaxFeasibilityRadius);
+  while (worth_a_wider_ball() && o.feasibility_radius < max_radius) {
+    o.feasibility_radius = std::min(o.feasibility_radius * kWiderBallFactor, max_radius);
+    o.time_limit_s = options.time_limit_s - seconds_since(start);
+    if (o.time_limit_s <= 0) break;
+    sol = minimize_linear(lmi, c, o, VectorXd(), observer);
+    keep_best();
+  }
+  return best ? *best : sol;
 }
 
 }  // namespace hinf::sdp

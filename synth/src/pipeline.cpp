@@ -3,7 +3,6 @@
 // certificate's checks 2–4, units, the optimality bracket and the solver's record.
 #include "pipeline.hpp"
 
-#include <chrono>
 #include <optional>
 #include <cmath>
 
@@ -89,40 +88,17 @@ std::string structured_infeasible_hint() {
          "(uncertainty_blocks: full) is more conservative still; reduce the parameters' ranges)";
 }
 
-// The retry of a numerically failed solve in wider balls ‖x‖ < ρ (docs/maths.md §4.3):
-// each retry multiplies the feasibility radius and phase I's by this factor, up to the
-// largest radius (beyond ~1e16 the ball's barrier term is lost in round-off of ‖x‖²).
-constexpr double kRetryRadiusFactor = 1e4;
-constexpr double kMaxRetryRadius = 1e16;
-
 sdp::Solution solve_min_gamma(const lmi::LmiProblem& lmi, lmi::VarId g, const std::vector<lmi::SparseEntry>& basis_error,
                               const Settings& settings, const IterationObserver& observer, const std::string& what,
                               const std::string& infeasible_hint, const std::string& failure_hint) {
   require_memory(lmi, settings, ("the " + what).c_str());
-  sdp::Options options = settings.solver;
-  const auto start = std::chrono::steady_clock::now();
-  sdp::Solution sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(),
-                                           staged(observer, SolveStage::Synthesis));
   // Near the boundary of feasibility the feasible set lies far out (the Lyapunov matrix,
-  // the multiplier and γ* grow as the uncertainty channel's gain nears 1): a centring that
-  // fails on round-off is retried with both balls wider (docs/maths.md §4.3). A point the
-  // solver stopped short at is kept unless a retry does better (it is never discarded).
-  std::optional<sdp::Solution> best;
-  const auto keep_best = [&] {
-    if (sdp::has_point(sol.status) && (!best || sol.status == sdp::Status::Solved || sol.objective < best->objective))
-      best = sol;
-  };
-  keep_best();
-  while ((sol.status == sdp::Status::NumericalError || sol.status == sdp::Status::StoppedShort) &&
-         options.feasibility_radius < kMaxRetryRadius) {
-    options.feasibility_radius = std::min(options.feasibility_radius * kRetryRadiusFactor, kMaxRetryRadius);
-    options.time_limit_s =
-        settings.solver.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.time_limit_s <= 0) break;
-    sol = sdp::minimize_linear(lmi, lmi.cost_of(g), options, VectorXd(), staged(observer, SolveStage::Synthesis));
-    keep_best();
-  }
-  if (best) return *best;
+  // the multiplier and γ* grow as the uncertainty channel's gain nears 1): a solve that
+  // fails on round-off is retried in wider balls, keeping its best point (docs/maths.md §4.3).
+  const sdp::Solution sol =
+      sdp::minimize_in_wider_balls(lmi, lmi.cost_of(g), settings.solver, sdp::WiderBallsWhen::FailedOrStoppedShort,
+                                   staged(observer, SolveStage::Synthesis));
+  if (sdp::has_point(sol.status)) return sol;
   if (sol.status == sdp::Status::Infeasible)
     throw infeasibility_verdict(lmi, sol, basis_error, settings, what, infeasible_hint);
   std::string msg = what + ": " + sdp::status_message(sol.status);

@@ -1,7 +1,6 @@
 // synthesize_controller, controller_sdpa (controller_synthesis.hpp).
 #include "hinf/synth/controller_synthesis.hpp"
 
-#include <algorithm>
 #include <limits>
 #include <cmath>
 #include <complex>
@@ -25,6 +24,11 @@ namespace {
 // When the γ-optimal point does not give a controller (I − R S numerically singular, or a
 // certificate lost to round-off), the back-offs (149a) tried in turn (the γ written says which).
 constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3, 1e-2, 5e-2};
+// The widest ball the controller LMI is solved in: points further out are a hair nearer γ*
+// but so large that I − R S is singular to working precision at every back-off, so no
+// controller is recovered from them (docs/maths.md §4.3; measured on the plant
+// 1/(s(s − p)): p = 1e5 gives a certified controller from the 1e12 ball, none from 1e16).
+constexpr double kMaxControllerRadius = 1e12;
 // The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
 // 1e3, then golden sections within a decade of the best.
 constexpr double kLogDLow = -6, kLogDHigh = 3;
@@ -132,8 +136,13 @@ sdp::Solution minimize_gamma(const ControllerLmi& C, const Settings& settings, c
                              KnownFeasible known = KnownFeasible::No) {
   sdp::Options options = settings.solver;
   options.relative_gap_tol = std::max(options.relative_gap_tol, relative_gap_tol);
-  const sdp::Solution sol = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), options, Eigen::VectorXd(),
-                                                 staged(observer, SolveStage::Controller));
+  // γ* can lie far out (a fast unstable pole seen through an integrator: γ* ≈ 2p²), beyond
+  // the configured ball: wider balls when phase I finds none in it, the optimum lies on it,
+  // or a solve fails; not after stopping short, and not beyond kMaxControllerRadius
+  // (docs/maths.md §4.3).
+  const sdp::Solution sol =
+      sdp::minimize_in_wider_balls(C.lmi, C.lmi.cost_of(C.g), options, sdp::WiderBallsWhen::Failed,
+                                   staged(observer, SolveStage::Controller), kMaxControllerRadius);
   if (sol.status == sdp::Status::Infeasible && known == KnownFeasible::Yes)
     throw Error(ErrorCode::NumericalFailure,
                 what + ": phase I stopped short of a strictly feasible point (" + sol.detail +
@@ -183,8 +192,11 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
       const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
       sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
       options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
-      const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
-                                                    staged(x.observer, SolveStage::Backoff));
+      // in the ball γ*'s point was found in (it may be wider than the configured one)
+      options.feasibility_radius = std::max(options.feasibility_radius, sol.feasibility_radius);
+      const sdp::Solution sb =
+          sdp::minimize_in_wider_balls(B.lmi, B.lmi.cost_of(*B.t), options, sdp::WiderBallsWhen::Failed,
+                                       staged(x.observer, SolveStage::Backoff));
       r.newton_iterations += sb.newton_total;
       r.time_s += sb.elapsed_s;
       if (!sdp::has_point(sb.status)) {

@@ -63,6 +63,11 @@ struct Solution {
   // Infeasible, the last is the final point, for the verified certificate of
   // infeasibility (dual_bound.hpp verified_infeasibility).
   std::vector<Eigen::VectorXd> phase1_path;
+  // The point lies on the ball ‖x‖ < ρ_b (‖x‖ ≥ ρ_b/2), which may be what bounds it: an
+  // Infeasible phase I may find a strictly feasible point in a wider ball, a Solved or
+  // StoppedShort solve a better objective (docs/maths.md §4.3, §5.5).
+  bool ball_bound = false;
+  double feasibility_radius = 0;  // ρ_b of the ball this solution was found in
   double elapsed_s = 0;
 };
 
@@ -70,6 +75,28 @@ struct Solution {
 Solution minimize_linear(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c, const Options& options,
                          const Eigen::VectorXd& x0 = Eigen::VectorXd(),
                          const ProgressObserver& observer = nullptr);
+
+// The largest feasibility radius: beyond ~1e16 the ball's barrier term −log(ρ² − ‖x‖²) is
+// lost in the round-off of ‖x‖² (docs/maths.md §4.3).
+constexpr double kMaxFeasibilityRadius = 1e16;
+// Each retry of minimize_in_wider_balls multiplies the feasibility radius by this factor.
+constexpr double kWiderBallFactor = 1e4;
+
+// Which outcomes of minimize_linear minimize_in_wider_balls runs again in a wider ball.
+// Always: an outcome bounded by the ball (Solution::ball_bound) and a failure on round-off.
+enum class WiderBallsWhen {
+  Failed,               // those only
+  FailedOrStoppedShort  // those, and a point short of the gap goal (StoppedShort)
+};
+
+// minimize_linear, run again with the feasibility radius (options.feasibility_radius)
+// kWiderBallFactor times wider, up to max_radius, while its outcome is one
+// `when` names; options.time_limit_s covers every attempt. Returns the best point any
+// attempt reached (Solved first, then the smallest objective) — a point is never
+// discarded — else the last attempt (docs/maths.md §4.3).
+Solution minimize_in_wider_balls(const lmi::LmiProblem& lmi, const Eigen::VectorXd& c, const Options& options,
+                                 WiderBallsWhen when, const ProgressObserver& observer = nullptr,
+                                 double max_radius = kMaxFeasibilityRadius);
 
 // The version of the Newton engine (Ipopt) the solver was built with, for provenance.
 const char* newton_engine_version();
