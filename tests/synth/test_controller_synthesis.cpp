@@ -302,7 +302,7 @@ TEST(ControllerSynthesis, AFastUnstablePoleBehindAnIntegratorIsSolvedInAWiderBal
     if (p == 1e2) {  // hinfsyn: 20004.00286 (its controller's norm, Octave's norm(·, inf))
       ASSERT_TRUE(r.gamma_optimal.has_value());
       EXPECT_LE(*r.gamma_optimal, 20004.00286);
-      EXPECT_LE(r.gamma, 20004.00286 * (1 + 1e-5));
+      EXPECT_LE(r.gamma, 20004.00286 * (1 + 1e-6));  // issue 35: ≤ hinfsyn × (1 + 1e-6)
     }
     expect_certified(P, r);
   }

@@ -171,61 +171,95 @@ hinf::UncertaintyChannel scaled_channel(const hinf::UncertaintyChannel& c, const
   return {s.state.cwiseInverse().asDiagonal() * c.H / s.time, c.E * s.state.asDiagonal()};
 }
 
-// The controller of LMI C (minimising γ, solution sol) recovered and certified into r: at
-// the γ-optimal point, or — asked for (settings.gamma_backoff), or when the recovery there
-// fails numerically (I − R S singular: the optimum is often reached only in the limit) — at
-// the back-off point of (149a). False (and `why`) if no attempt gave a controller.
-bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
-                       const hinf::UncertaintyChannel* channel, ControllerSynthesisResult& r, std::string& why) {
+// What one attempt at recovering a controller gave.
+enum class Recovered {
+  Certified,     // certified
+  RobustFailed,  // stable, but the robust channel's small-gain test fails: a property of it
+  Failed         // no controller, or one the certificate rejects: a numerical failure
+};
+
+// The controller of LMI C (minimising γ, solution sol) at back-off b, recovered and
+// certified into r: at the γ-optimal point (b = 0) or at the back-off point of (149a)
+// at (1 + b) γ*; `why` says why it failed.
+Recovered recover_at(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
+                     const hinf::UncertaintyChannel* channel, double b, ControllerSynthesisResult& r, std::string& why) {
   const ControllerScaling& sc = x.S.scaling;
   const hinf::GeneralisedPlant& Ps = x.S.plant;
   const double gamma_star = C.lmi.value(C.g, sol.x)(0, 0);  // scaled units
+  ControllerPoint pt = controller_point(C, Ps, sol.x);
+  Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);
+  r.gamma_optimal.reset();
+  r.backoff = 0;
+  if (b > 0) {
+    const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
+    sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
+    options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
+    // in the ball γ*'s point was found in (it may be wider than the configured one)
+    options.feasibility_radius = std::max(options.feasibility_radius, sol.feasibility_radius);
+    const sdp::Solution sb = sdp::minimize_in_wider_balls(B.lmi, B.lmi.cost_of(*B.t), options,
+                                                          sdp::WiderBallsWhen::Failed, staged(x.observer, SolveStage::Backoff));
+    r.newton_iterations += sb.newton_total;
+    r.time_s += sb.elapsed_s;
+    if (!sdp::has_point(sb.status)) {
+      why = "gamma back-off (docs/maths.md (149a)): maximising the LMI margin at gamma = " +
+            fmt(*B.g_fixed * sc.gamma_factor()) + " failed: " + std::string(sdp::status_message(sb.status)) +
+            (sb.detail.empty() ? "" : ": " + sb.detail);
+      return Recovered::Failed;
+    }
+    pt = controller_point(B, Ps, sb.x);
+    lmi_at_point = B.lmi.evaluate(sb.x);
+    r.gamma_optimal = gamma_star * sc.gamma_factor();
+    r.backoff = b;
+  }
+  double cond_N = 0;
+  try {
+    r.controller = unscaled_controller(recover_controller(pt, Ps, &cond_N), sc);
+  } catch (const Error& e) {
+    why = e.what();
+    return Recovered::Failed;
+  }
+  r.gamma = pt.gamma * sc.gamma_factor();
+  r.certificate = certify::certify_controller(x.P, r.controller, r.gamma, x.design.checks());
+  r.certificate.cond_N = cond_N;
+  r.certificate.lmi_max_eigenvalue =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
+  if (r.certificate.passed) return Recovered::Certified;
+  if (r.certificate.stable && !r.certificate.robustly_stable) return Recovered::RobustFailed;
+  why = "the certificate failed";
+  return Recovered::Failed;
+}
+
+// The controller of LMI C recovered and certified into r: at the γ-optimal point, or — asked
+// for (settings.gamma_backoff), or when the recovery there fails numerically (I − R S
+// singular: the optimum is often reached only in the limit) — at the automatic back-offs in
+// turn; when one succeeds after another failed, also at their geometric mean, kept if its
+// certified norm is lower (back off only as far as recovery needs, docs/maths.md §6). False
+// (and `why`) if no attempt gave a controller. Only numerical failures are retried further
+// out: a robust channel that fails is a property of the design.
+bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
+                       const hinf::UncertaintyChannel* channel, ControllerSynthesisResult& r, std::string& why) {
   std::vector<double> backoffs{0.0};  // the optimum, then the automatic back-offs
   backoffs.insert(backoffs.end(), std::begin(kAutomaticBackoffs), std::end(kAutomaticBackoffs));
-  if (x.settings.gamma_backoff > 0) backoffs = {x.settings.gamma_backoff};
+  const bool automatic = !(x.settings.gamma_backoff > 0);
+  if (!automatic) backoffs = {x.settings.gamma_backoff};
+  double last_failed = 0;
   for (const double b : backoffs) {
-    ControllerPoint pt = controller_point(C, Ps, sol.x);
-    Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);
-    r.gamma_optimal.reset();
-    r.backoff = 0;
-    if (b > 0) {
-      const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
-      sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
-      options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
-      // in the ball γ*'s point was found in (it may be wider than the configured one)
-      options.feasibility_radius = std::max(options.feasibility_radius, sol.feasibility_radius);
-      const sdp::Solution sb =
-          sdp::minimize_in_wider_balls(B.lmi, B.lmi.cost_of(*B.t), options, sdp::WiderBallsWhen::Failed,
-                                       staged(x.observer, SolveStage::Backoff));
-      r.newton_iterations += sb.newton_total;
-      r.time_s += sb.elapsed_s;
-      if (!sdp::has_point(sb.status)) {
-        why = "gamma back-off (docs/maths.md (149a)): maximising the LMI margin at gamma = " +
-              fmt(*B.g_fixed * sc.gamma_factor()) + " failed: " + std::string(sdp::status_message(sb.status)) +
-              (sb.detail.empty() ? "" : ": " + sb.detail);
-        continue;
-      }
-      pt = controller_point(B, Ps, sb.x);
-      lmi_at_point = B.lmi.evaluate(sb.x);
-      r.gamma_optimal = gamma_star * sc.gamma_factor();
-      r.backoff = b;
-    }
-    double cond_N = 0;
-    try {
-      r.controller = unscaled_controller(recover_controller(pt, Ps, &cond_N), sc);
-    } catch (const Error& e) {
-      why = e.what();
+    const Recovered got = recover_at(x, C, sol, channel, b, r, why);
+    if (got == Recovered::Failed) {
+      last_failed = b;
       continue;
     }
-    r.gamma = pt.gamma * sc.gamma_factor();
-    r.certificate = certify::certify_controller(x.P, r.controller, r.gamma, x.design.checks());
-    r.certificate.cond_N = cond_N;
-    r.certificate.lmi_max_eigenvalue =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
-    r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
-    // only numerical failures are retried further out; a robust channel that fails is a property
-    if (r.certificate.passed || (r.certificate.stable && !r.certificate.robustly_stable)) return true;
-    why = "the certificate failed";
+    if (got == Recovered::Certified && automatic && last_failed > 0) {
+      ControllerSynthesisResult mid = r;
+      std::string mid_why;
+      const bool better = recover_at(x, C, sol, channel, std::sqrt(last_failed * b), mid, mid_why) == Recovered::Certified &&
+                          mid.certificate.closed_loop_hinf_norm < r.certificate.closed_loop_hinf_norm;
+      r.newton_iterations = mid.newton_iterations;
+      r.time_s = mid.time_s;
+      if (better) r = std::move(mid);
+    }
+    return true;
   }
   return r.controller.A_K.size() > 0;
 }
