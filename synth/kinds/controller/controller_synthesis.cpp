@@ -194,10 +194,12 @@ Recovered recover_at(const SynthesisContext& x, const ControllerLmi& C, const sd
     const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
     sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
     options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
-    // in the ball γ*'s point was found in (it may be wider than the configured one)
+    // in the ball γ*'s point was found in (it may be wider than the configured one), not
+    // wider: the largest margin grows with the variables, so its point lies on any ball, and
+    // a wider one leaves I − R S singular to working precision (docs/maths.md §4.3)
     options.feasibility_radius = std::max(options.feasibility_radius, sol.feasibility_radius);
-    const sdp::Solution sb = sdp::minimize_in_wider_balls(B.lmi, B.lmi.cost_of(*B.t), options,
-                                                          sdp::WiderBallsWhen::Failed, staged(x.observer, SolveStage::Backoff));
+    const sdp::Solution sb = sdp::minimize_linear(B.lmi, B.lmi.cost_of(*B.t), options, Eigen::VectorXd(),
+                                                  staged(x.observer, SolveStage::Backoff));
     r.newton_iterations += sb.newton_total;
     r.time_s += sb.elapsed_s;
     if (!sdp::has_point(sb.status)) {
