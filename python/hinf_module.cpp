@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,7 +21,10 @@
 #include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
 #include "hinf/sim/family.hpp"
 #include "hinf/synth/api.hpp"
+#include "hinf/synth/comparison.hpp"
+#include "hinf/synth/filter_file.hpp"
 #include "hinf/synth/gains_output.hpp"
+#include "hinf/synth/sweep.hpp"
 
 namespace py = pybind11;
 using hinf::synth::Problem;
@@ -64,6 +68,43 @@ py::dict solve_dict(const hinf::synth::SolveOutcome& o) {
     d["matrices"] = controller_dict(std::get<hinf::synth::ControllerSynthesisResult>(o.result).controller);
   }
   return d;
+}
+
+// One point of a sweep as the CSV and JSON of `hinf-synth sweep` give it (None where they
+// leave the field empty or null).
+py::dict sweep_point_dict(const hinf::synth::SweepPoint& p) {
+  const bool ok = p.outcome == hinf::ErrorCode::Ok;
+  py::dict d;
+  d["value"] = p.value;
+  d["outcome"] = hinf::synth::sweep_outcome_word(p.outcome);
+  d["exit_code"] = hinf::exit_code(p.outcome);
+  d["gamma"] = ok ? py::object(py::float_(p.gamma)) : py::none();
+  d["gamma_lower"] = ok && p.gap_certified ? py::object(py::float_(p.gamma_lower)) : py::none();
+  d["form"] = ok ? py::object(py::str(p.form)) : py::none();
+  d["time_s"] = p.time_s;
+  d["message"] = p.message;
+  return d;
+}
+
+py::list sweep_points(const std::vector<hinf::synth::SweepPoint>& points) {
+  py::list l;
+  for (const auto& p : points) l.append(sweep_point_dict(p));
+  return l;
+}
+
+py::dict figures_dict(const hinf::synth::FilterFigures& f) {
+  py::dict d;
+  d["hinf_norm_nominal"] = f.hinf_norm_nominal;
+  d["hinf_peak_theta"] = f.hinf_peak_theta;
+  d["h2_norm_nominal"] = f.h2_norm_nominal;
+  d["robust_bound"] = std::isnan(f.robust_bound) ? py::object(py::none()) : py::object(py::float_(f.robust_bound));
+  d["sigma"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(f.sigma.data(), static_cast<Eigen::Index>(f.sigma.size())));
+  return d;
+}
+
+// A config's text (read from `path` as the executables read it when `text` is None).
+std::string config_text(const std::optional<std::string>& text, const std::string& path) {
+  return text ? *text : hinf::read_input_file(path, "config", hinf::kMaxConfigBytes);
 }
 
 using hinf::runtime::LtiFilter;
@@ -221,6 +262,61 @@ PYBIND11_MODULE(_hinf, m) {
     return std::shared_ptr<Problem>(hinf::synth::parse_problem(text, name));
   });
   m.def("load_problem", [](const std::string& path) { return std::shared_ptr<Problem>(hinf::synth::load_problem(path)); });
+
+  // `hinf-synth sweep --param NAME=…`: a full certified synthesis at each value, a point's
+  // failure recorded (never raised), as a list of dicts.
+  m.def(
+      "sweep",
+      [](std::optional<std::string> text, const std::string& path, const std::string& name,
+         const std::vector<double>& values) {
+        const std::string yaml = config_text(text, path);
+        const auto points = without_gil([&] {
+          const hinf::synth::SweepParameter parameter = hinf::synth::resolve_sweep_parameter(name, yaml, path);
+          return hinf::synth::sweep(parameter, values, yaml, path);
+        });
+        return sweep_points(points);
+      },
+      py::arg("text"), py::arg("path"), py::arg("name"), py::arg("values"));
+
+  // `hinf-synth sweep --max-feasible NAME=LO:HI`: the largest certified value, by bisection.
+  m.def(
+      "max_feasible",
+      [](std::optional<std::string> text, const std::string& path, const std::string& name, double lo, double hi,
+         double tolerance) {
+        const std::string yaml = config_text(text, path);
+        const hinf::synth::FeasibilitySearch s = without_gil([&] {
+          const hinf::synth::SweepParameter parameter = hinf::synth::resolve_sweep_parameter(name, yaml, path);
+          return hinf::synth::max_feasible(parameter, lo, hi, tolerance, yaml, path);
+        });
+        py::dict d;
+        d["largest_certified"] = sweep_point_dict(s.largest_certified);
+        d["smallest_not_certified"] =
+            s.smallest_not_certified ? py::object(sweep_point_dict(*s.smallest_not_certified)) : py::none();
+        d["smallest_infeasible"] = s.smallest_infeasible ? py::object(sweep_point_dict(*s.smallest_infeasible)) : py::none();
+        d["bracket_width"] = s.bracketed ? py::object(py::float_(s.width)) : py::none();
+        d["evaluated"] = sweep_points(s.evaluated);
+        return d;
+      },
+      py::arg("text"), py::arg("path"), py::arg("name"), py::arg("lo"), py::arg("hi"), py::arg("tolerance"));
+
+  // `hinf-synth compare CONFIG GAINS`: the filter beside the Kalman filter of the same plant.
+  m.def(
+      "compare",
+      [](const std::string& config_path, const std::string& gains_path, int points) {
+        const auto [c, sample_time] = without_gil([&] {
+          const hinf::synth::ConfigAndFilter in = hinf::synth::load_config_and_filter(config_path, gains_path);
+          return std::make_pair(hinf::synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, points,
+                                                                 in.config.kalman_noise),
+                                in.config.sample_time());
+        });
+        py::dict d;
+        d["theta"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.theta.data(), static_cast<Eigen::Index>(c.theta.size())));
+        d["sample_time"] = sample_time ? py::object(py::float_(*sample_time)) : py::none();
+        d["filter"] = figures_dict(c.filter);
+        d["kalman"] = figures_dict(c.kalman);
+        return d;
+      },
+      py::arg("config"), py::arg("gains"), py::arg("points") = 400);
 
   // One Monte-Carlo campaign in memory (the scenario read as hinf-sim reads it): the run
   // directory's files as {name: bytes}.

@@ -59,7 +59,7 @@ void add_compare(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman");
   cmd->add_option("--plot", *plot, "PNG of both sigma curves (gnuplot)");
   cmd->add_option("--points", *points, "log-spaced frequencies (default 400; both peaks are added)")
-      ->check(CLI::Range(2, 100000));
+      ->check(CLI::Range(2, synth::kMaxComparisonPoints));
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::ConfigAndFilter in = synth::load_config_and_filter(args->config, args->gains);

@@ -31,17 +31,6 @@ std::pair<std::string, std::string> name_and_range(const std::string& text, cons
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-const char* outcome_word(ErrorCode c) {
-  switch (c) {
-    case ErrorCode::Ok: return "certified";
-    case ErrorCode::Infeasible: return "infeasible";
-    case ErrorCode::NumericalFailure: return "numerical_failure";
-    case ErrorCode::InvalidInput: return "invalid_input";
-    case ErrorCode::CheckFailed: return "check_failed";
-  }
-  return "unknown";
-}
-
 std::string csv_field(const std::string& s) {
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -53,7 +42,7 @@ std::string sweep_csv(const std::string& name, const std::vector<synth::SweepPoi
   os << "parameter,value,outcome,exit_code,gamma,gamma_lower,form,time_s,message\n";
   for (const auto& p : points) {
     const bool ok = p.outcome == ErrorCode::Ok;
-    os << name << ',' << num(p.value) << ',' << outcome_word(p.outcome) << ',' << exit_code(p.outcome) << ','
+    os << name << ',' << num(p.value) << ',' << synth::sweep_outcome_word(p.outcome) << ',' << exit_code(p.outcome) << ','
        << (ok ? num(p.gamma) : "") << ',' << (ok && p.gap_certified ? num(p.gamma_lower) : "") << ',' << p.form
        << ',' << num(p.time_s) << ',' << csv_field(p.message) << '\n';
   }
@@ -64,7 +53,7 @@ Json point_json(const synth::SweepPoint& p) {
   const bool ok = p.outcome == ErrorCode::Ok;
   Json j = Json::object();
   j["value"] = p.value;
-  j["outcome"] = outcome_word(p.outcome);
+  j["outcome"] = synth::sweep_outcome_word(p.outcome);
   j["exit_code"] = exit_code(p.outcome);
   j["gamma"] = ok ? Json(p.gamma) : Json(nullptr);
   j["gamma_lower"] = ok && p.gap_certified ? Json(p.gamma_lower) : Json(nullptr);
@@ -110,7 +99,7 @@ void print_points(const std::string& name, const std::vector<synth::SweepPoint>&
       std::cout << "gamma = " << num(p.gamma) << " certified (" << p.form << " form)"
                 << (p.gap_certified ? ", gamma* >= " + num(p.gamma_lower) : std::string()) << "\n";
     else
-      std::cout << outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
+      std::cout << synth::sweep_outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
   }
 }
 
@@ -155,7 +144,7 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
   if (!s.bracketed) std::cout << ": the upper end of the range; the boundary, if any, lies above it\n";
   else {
     const synth::SweepPoint& up = *s.smallest_not_certified;
-    std::cout << "; no certified filter at " << num(up.value) << " (" << outcome_word(up.outcome)
+    std::cout << "; no certified filter at " << num(up.value) << " (" << synth::sweep_outcome_word(up.outcome)
               << "): bracket width " << num(s.width) << "\n";
     if (!s.smallest_infeasible)
       std::cout << "no point was verified infeasible: above " << num(best.value)

@@ -23,7 +23,8 @@ import yaml
 
 from . import _hinf
 
-__all__ = ["synthesize", "kalman", "analyze", "verify", "check", "export_sdpa", "codegen", "simulate", "lti_filter",
+__all__ = ["synthesize", "kalman", "analyze", "verify", "check", "export_sdpa", "codegen", "sweep", "max_feasible",
+           "compare", "simulate", "lti_filter",
            "Error", "CheckFailed",
            "InvalidInput", "Infeasible", "NumericalFailure", "SynthesisResult", "Campaign"]
 
@@ -78,16 +79,25 @@ def _plain(value):
     return value
 
 
-def _problem(config):
-    """A config given as a path, as YAML text, or as a dict (numpy arrays allowed)."""
+def _config_source(config):
+    """(text, name) of a config given as a path (text None: the library reads the file), as
+    YAML text, or as a dict (numpy arrays allowed)."""
     if isinstance(config, dict):
         # JSON is YAML; json.dumps writes every float with the digits that read it back exactly
-        return _call(_hinf.parse_problem, json.dumps(_plain(config), allow_nan=False), "<dict>")
+        return json.dumps(_plain(config), allow_nan=False), "<dict>"
     if isinstance(config, os.PathLike) or (isinstance(config, str) and "\n" not in config):
-        return _call(_hinf.load_problem, os.fspath(config))  # a one-line string is a path
+        return None, os.fspath(config)  # a one-line string is a path
     if isinstance(config, str):
-        return _call(_hinf.parse_problem, config, "<text>")
+        return config, "<text>"
     raise InvalidInput("config: expected a path, YAML text or a dict, got " + type(config).__name__)
+
+
+def _problem(config):
+    """A config given as a path, as YAML text, or as a dict (numpy arrays allowed)."""
+    text, name = _config_source(config)
+    if text is None:
+        return _call(_hinf.load_problem, name)
+    return _call(_hinf.parse_problem, text, name)
 
 
 class SynthesisResult:
@@ -170,6 +180,44 @@ def check(config, golden, rtol=1e-6):
 def export_sdpa(config):
     """`hinf-synth export-sdpa`: the synthesis LMI in SDPA sparse format."""
     return _call(_problem(config).export_sdpa)
+
+
+def _sweep_arrays(points):
+    """The points' values, certified gammas (NaN where not certified) and exit codes as arrays."""
+    return (np.array([p["value"] for p in points], dtype=float),
+            np.array([np.nan if p["gamma"] is None else p["gamma"] for p in points], dtype=float),
+            np.array([p["exit_code"] for p in points], dtype=int))
+
+
+def sweep(config, param, values):
+    """`hinf-synth sweep --param`: a full certified synthesis of a filter config at each value of
+    one of its numbers (`param`: delta_bar, uncertainty_scale, or a key path such as
+    "hill.sample_time"). Returns {"parameter", "points": one dict per value as the executable's
+    JSON (value, outcome, exit_code, gamma, gamma_lower, form, time_s, message), "value",
+    "gamma" (NaN where not certified), "exit_code"} — a point that fails is recorded, not raised."""
+    text, name = _config_source(config)
+    points = _call(_hinf.sweep, text, name, param, [float(v) for v in values])
+    value, gamma, code = _sweep_arrays(points)
+    return {"parameter": param, "points": points, "value": value, "gamma": gamma, "exit_code": code}
+
+
+def max_feasible(config, param, lo, hi, tolerance=1e-3):
+    """`hinf-synth sweep --max-feasible`: the largest value of `param` in [lo, hi] with a certified
+    filter, by bisection: {"largest_certified", "smallest_not_certified", "smallest_infeasible"
+    (point dicts or None), "bracket_width" (None if hi is certified), "evaluated" (every point)}."""
+    text, name = _config_source(config)
+    return _call(_hinf.max_feasible, text, name, param, float(lo), float(hi), float(tolerance))
+
+
+def compare(config, gains, points=400):
+    """`hinf-synth compare`: a filter (gains file) beside the Kalman filter of the same plant (config
+    file): {"theta" (rad/sample), "frequency_hz" (None without a sample time), "filter" and
+    "kalman": {"hinf_norm_nominal", "hinf_peak_theta", "h2_norm_nominal", "robust_bound" (None for
+    a certain plant), "sigma" (σ_max of the error system on theta)}}."""
+    c = _call(_hinf.compare, os.fspath(config), os.fspath(gains), points)
+    T = c.pop("sample_time")
+    c["frequency_hz"] = None if T is None else c["theta"] / (2 * np.pi * T)
+    return c
 
 
 class Campaign:

@@ -34,7 +34,9 @@ FilterFigures figures(const Plant& plant, const Filter& filter, const Settings& 
 Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points,
                                const KalmanNoise& noise) {
   validate_plant(plant);
-  if (points < 2) throw Error(ErrorCode::InvalidInput, "--points = " + std::to_string(points) + ": must be >= 2");
+  if (points < 2 || points > kMaxComparisonPoints)
+    throw Error(ErrorCode::InvalidInput, "--points = " + std::to_string(points) + ": must be in [2, " +
+                                             std::to_string(kMaxComparisonPoints) + "]", "points");
   Comparison c;
   c.filter = figures(plant, filter, settings);
   Settings same_estimate = settings;  // the Kalman filter that estimates what the filter does (§18.6)

@@ -77,6 +77,17 @@ std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector
   return points;
 }
 
+const char* sweep_outcome_word(ErrorCode outcome) {
+  switch (outcome) {
+    case ErrorCode::Ok: return "certified";
+    case ErrorCode::Infeasible: return "infeasible";
+    case ErrorCode::NumericalFailure: return "numerical_failure";
+    case ErrorCode::InvalidInput: return "invalid_input";
+    case ErrorCode::CheckFailed: return "check_failed";
+  }
+  return "unknown";
+}
+
 std::vector<double> parse_sweep_range(const std::string& text, const std::string& option) {
   const auto fail = [&](const std::string& why) -> Error {
     return Error(ErrorCode::InvalidInput, option + " '" + text + "': " + why, option);

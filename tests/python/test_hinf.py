@@ -1,6 +1,7 @@
 """The Python module against the executables (docs/python.md): the same files byte for byte
 (timing apart), the same matrices, the same errors with the same exit codes and messages.
 Run by CTest with PYTHONPATH=<build>/python, HINF_SYNTH and HINF_SIM the executables."""
+import json
 import os
 import re
 import subprocess
@@ -184,3 +185,62 @@ def test_a_missing_file_is_invalid_input_naming_it(call, tmp_path):
     with pytest.raises(hinf.InvalidInput) as err:
         call(missing)
     assert err.value.exit_code == 2 and "no-such-file.yaml" in str(err.value)
+
+
+def test_sweep_gives_the_executables_points(tmp_path):
+    config = path("configs", "paper-dbar0.05.yaml")
+    s = hinf.sweep(config, "delta_bar", [0.05, 0.1])
+    run = subprocess.run([SYNTH, "sweep", config, "--param", "delta_bar=0.05:0.05:0.1", "--json",
+                          str(tmp_path / "s.json")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    cli = json.load(open(tmp_path / "s.json"))["points"]
+    assert [{k: v for k, v in p.items() if k != "time_s"} for p in s["points"]] == \
+           [{k: v for k, v in p.items() if k != "time_s"} for p in cli]
+    np.testing.assert_array_equal(s["value"], [0.05, 0.1])
+    np.testing.assert_array_equal(s["gamma"], [p["gamma"] for p in cli])
+    np.testing.assert_array_equal(s["exit_code"], [0, 0])
+
+
+def test_max_feasible_gives_the_executables_bracket(tmp_path):
+    config = path("configs", "paper-dbar0.05.yaml")
+    m = hinf.max_feasible(config, "delta_bar", 0.05, 0.1, tolerance=0.02)
+    run = subprocess.run([SYNTH, "sweep", config, "--max-feasible", "delta_bar=0.05:0.1", "--tolerance", "0.02",
+                          "--json", str(tmp_path / "m.json")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    cli = json.load(open(tmp_path / "m.json"))
+    strip = lambda p: None if p is None else {k: v for k, v in p.items() if k != "time_s"}
+    for key in ("largest_certified", "smallest_not_certified", "smallest_infeasible"):
+        assert strip(m[key]) == strip(cli[key])
+    assert m["bracket_width"] == cli["bracket_width"]
+    assert [strip(p) for p in m["evaluated"]] == [strip(p) for p in cli["evaluated"]]
+
+
+def test_compare_gives_the_executables_curves(tmp_path):
+    config = path("configs", "paper-dbar0.05.yaml")
+    gains = tmp_path / "g.yaml"
+    assert solve_cli(config, gains).returncode == 0
+    c = hinf.compare(config, gains, points=50)
+    run = subprocess.run([SYNTH, "compare", config, str(gains), "--points", "50", "-o", str(tmp_path / "s.csv")],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    table = np.genfromtxt(tmp_path / "s.csv", delimiter=",", names=True)
+    # the CSV holds 10 significant digits (hinf-synth's number format)
+    np.testing.assert_allclose(c["theta"], table["theta_rad_per_sample"], rtol=1e-9)
+    np.testing.assert_allclose(c["frequency_hz"], table["frequency_hz"], rtol=1e-9)
+    np.testing.assert_allclose(c["filter"]["sigma"], table["sigma_filter"], rtol=1e-9)
+    np.testing.assert_allclose(c["kalman"]["sigma"], table["sigma_kalman"], rtol=1e-9)
+    # the filter's worst-case gain is the largest of its sigma curve (both peaks are on the grid)
+    assert c["filter"]["hinf_norm_nominal"] == pytest.approx(c["filter"]["sigma"].max(), rel=1e-9)
+    assert c["filter"]["robust_bound"] is not None and c["filter"]["robust_bound"] >= c["filter"]["hinf_norm_nominal"]
+    assert f"{c['filter']['hinf_norm_nominal']:.10g}" in run.stdout
+
+
+@pytest.mark.parametrize("call, key", [
+    (lambda: hinf.sweep(path("configs", "paper-dbar0.05.yaml"), "delta_barr", [0.1]), "delta_barr"),
+    (lambda: hinf.compare(path("configs", "paper-dbar0.05.yaml"), path("configs", "paper-published-gains.yaml"),
+                          points=1), "points"),
+])
+def test_sweep_and_compare_refuse_bad_input_naming_it(call, key):
+    with pytest.raises(hinf.InvalidInput) as e:
+        call()
+    assert key in str(e.value)

@@ -24,7 +24,11 @@ struct Comparison {
                               // filtered estimate (kalman_predictor, docs/maths.md (143))
 };
 
-// `points` log-spaced frequencies (≥ 2) with both filters' peak frequencies added.
+// The most frequencies a comparison evaluates.
+inline constexpr int kMaxComparisonPoints = 100000;
+
+// `points` log-spaced frequencies (2 to kMaxComparisonPoints) with both filters' peak
+// frequencies added; Error InvalidInput naming --points otherwise.
 Comparison compare_with_kalman(const Plant& plant, const Filter& filter, const Settings& settings, int points,
                                const KalmanNoise& noise = {});
 

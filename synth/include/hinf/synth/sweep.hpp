@@ -42,6 +42,10 @@ struct SweepPoint {
   double time_s = 0;
 };
 
+// The word for a point's outcome in the CSV, the JSON and Python: certified, infeasible,
+// numerical_failure, invalid_input, check_failed.
+const char* sweep_outcome_word(ErrorCode outcome);
+
 // `synthesize` at each value, in order. A point's failure to solve is recorded, never
 // thrown; a value that makes the config invalid is Error InvalidInput before any solve.
 std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector<double>& values,
