@@ -24,10 +24,9 @@ constexpr double kPhase1Radius = 1e8;
 constexpr double kPhase1Weight = 1e-3;
 // A point this far out in its ball (‖x‖ ≥ this·ρ) is the ball's: phase I's smallest s, or
 // phase II's optimum, is then taken on the sphere, and a wider ball may hold a better one.
-// Phase I is then run again in a ball kPhase1Growth times wider, up to ρ_b (docs/maths.md
+// Phase I is then run again in a ball kWiderBallFactor times wider, up to ρ_b (docs/maths.md
 // §5.5); phase II's caller may widen ρ_b (minimize_in_wider_balls, §4.3).
 constexpr double kBallBoundFraction = 0.5;
-constexpr double kPhase1Growth = 1e4;
 // Phase I without the objective penalty ends as infeasible once s − gap > 0 and the gap
 // is within this fraction of s: a point that close to its centre gives a tight,
 // verifiable dual certificate (docs/maths.md (118)); the first s − gap > 0 alone is often
@@ -427,18 +426,19 @@ bool PathFollower::find_feasible(VectorXd& x) {
   // feasibility radius (which would make phase II start with huge variables).
   const VectorXd x0 = x;
   for (double r1 = std::min(opt_.feasibility_radius, kPhase1Radius);;
-       r1 = std::min(r1 * kPhase1Growth, opt_.feasibility_radius)) {
+       r1 = std::min(r1 * kWiderBallFactor, opt_.feasibility_radius)) {
     sol_.status = Status::NotRun;
     sol_.detail.clear();
     x = x0;
     const bool ok = find_feasible_in_ball(x, lmax, r1);
     sol_.ball_bound = sol_.status == Status::Infeasible && x.norm() >= kBallBoundFraction * r1;
-    if (ok || !sol_.ball_bound || r1 >= opt_.feasibility_radius || out_of_budget()) {
-      if (sol_.ball_bound && sol_.status == Status::Infeasible)
-        sol_.detail += "; phase I's last point lies on its ball ‖x‖ < " + three_digits(r1) +
-                       ": a wider ball may hold a strictly feasible point";
-      return ok;
+    if (ok || !sol_.ball_bound) return ok;
+    if (r1 >= opt_.feasibility_radius) {
+      sol_.detail += "; phase I's last point lies on its ball ‖x‖ < " + three_digits(r1) +
+                     ": a wider ball may hold a strictly feasible point";
+      return false;
     }
+    if (out_of_budget()) return false;
   }
 }
 
@@ -523,7 +523,7 @@ Solution minimize_in_wider_balls(const lmi::LmiProblem& lmi, const VectorXd& c, 
   const auto worth_a_wider_ball = [&] {
     return sol.status == Status::NumericalError ||
            (when == WiderBallsWhen::FailedOrStoppedShort && sol.status == Status::StoppedShort) ||
-           (sol.status == Status::Infeasible && sol.ball_bound) || (has_point(sol.status) && sol.ball_bound && replaced);
+           (sol.ball_bound && (sol.status == Status::Infeasible || replaced));
   };
   max_radius = std::min(max_radius, kMaxFeasibilityRadius);
   while (worth_a_wider_ball() && o.feasibility_radius < max_radius) {

@@ -3,7 +3,6 @@
 // certificate's checks 2–4, units, the optimality bracket and the solver's record.
 #include "pipeline.hpp"
 
-#include <optional>
 #include <cmath>
 
 #include "hinf/certify/dense_lmi.hpp"

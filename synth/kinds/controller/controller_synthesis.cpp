@@ -186,11 +186,14 @@ Recovered recover_at(const SynthesisContext& x, const ControllerLmi& C, const sd
   const ControllerScaling& sc = x.S.scaling;
   const hinf::GeneralisedPlant& Ps = x.S.plant;
   const double gamma_star = C.lmi.value(C.g, sol.x)(0, 0);  // scaled units
-  ControllerPoint pt = controller_point(C, Ps, sol.x);
-  Eigen::MatrixXd lmi_at_point = C.lmi.evaluate(sol.x);
+  ControllerPoint pt;
+  Eigen::MatrixXd lmi_at_point;
   r.gamma_optimal.reset();
   r.backoff = 0;
-  if (b > 0) {
+  if (b == 0) {
+    pt = controller_point(C, Ps, sol.x);
+    lmi_at_point = C.lmi.evaluate(sol.x);
+  } else {
     const ControllerLmi B = build_controller_backoff_lmi(Ps, x.S.design, gamma_star * (1 + b), channel);
     sdp::Options options = x.settings.solver;  // the margin need only be near its maximum
     options.relative_gap_tol = std::max(x.settings.solver.relative_gap_tol, kBackoffRelativeGap);
