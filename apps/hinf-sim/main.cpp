@@ -1,4 +1,4 @@
-// hinf-sim SCENARIO.yaml --out DIR [--runs N] [--seed S] [--jobs J]
+// hinf-sim SCENARIO.yaml --out DIR [--runs N] [--seed S] [--jobs J] [--json]
 // Exit codes: 0 ok, 2 invalid input or unwritable output, 3 infeasible synthesis,
 // 4 numerical failure (synthesis certificate, non-finite truth).
 #include <CLI/CLI.hpp>
@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
 
@@ -58,6 +59,26 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
   app.add_flag("--quiet,-q", o.quiet, "no progress bar");
   app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
+  app.add_flag("--json", o.json, "print JSON (schema hinf-sim.run/1: the files written and summary.json) when done");
+}
+
+// --json: one line on stdout once the run directory is written: what it holds and the
+// summary (summary.json's own object, numbers bit for bit).
+void print_run_json(const hinf::sim::CampaignResult& result, const Options& o) {
+  using Json = nlohmann::ordered_json;
+  Json j;
+  j["schema"] = "hinf-sim.run/1";
+  j["scenario"] = o.scenario_path;
+  j["out"] = o.out_dir;
+  j["files"] = Json::array();
+  Json summary = nullptr;
+  for (const auto& [name, bytes] : result.files) {
+    j["files"].push_back(name);
+    if (name == "summary.json") summary = Json::parse(bytes);
+  }
+  j["plots"] = result.plots && !o.no_plots;
+  j["summary"] = std::move(summary);
+  std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
 }
 
 int run(int argc, char** argv) {
@@ -102,6 +123,7 @@ int run(int argc, char** argv) {
   } catch (const hinf::sim::PlotError& e) {
     return fail(std::string("plots: ") + e.what(), hinf::ErrorCode::InvalidInput);
   }
+  if (o.json) print_run_json(result, o);
   return 0;
 }
 

@@ -17,6 +17,7 @@ struct Options {
   int jobs = 1;
   std::optional<double> duration;
   bool no_plots = false, quiet = false, verbose = false;
+  bool json = false;  // the run directory's description and summary.json on stdout (docs/experiments.md)
 };
 
 // The library's status lines on stderr ("hinf-sim: synthesising from PATH ..."), or nothing.

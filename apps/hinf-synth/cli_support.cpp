@@ -9,6 +9,7 @@
 #include "hinf/sdp/time_model.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <utility>
 
 namespace hinf::cli {
@@ -24,6 +25,14 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
 }
 
 std::string num(double v) { return hinf::significant_text(v, 10); }
+
+void print_json(const Json& j) { std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n"; }
+
+void print_json(const std::string& json_line, const std::vector<std::pair<std::string, std::string>>& paths) {
+  Json j = Json::parse(json_line);
+  for (const auto& [key, path] : paths) j[key] = path;
+  print_json(j);
+}
 
 bool IterationTable::heartbeat(const sdp::Progress& r) {
   if (r.newton_step && !estimated_ && r.centering == 0 && r.newton == 1) {  // the first Newton iteration has ended

@@ -1,6 +1,7 @@
 // Helpers shared by the subcommands: loading inputs, printing numbers and reports.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <cstdio>
 #include <memory>
 #include <functional>
@@ -24,6 +25,12 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
 
 // "%.10g"
 std::string num(double v);
+using Json = nlohmann::ordered_json;  // keys in the order written
+// --json: one line of JSON on stdout (a path that is not UTF-8 with U+FFFD rather than refused).
+void print_json(const Json& j);
+// A job's JSON (one line, synth outcomes' `json`) with the paths the command wrote appended
+// as string keys (e.g. {"output", path}).
+void print_json(const std::string& json_line, const std::vector<std::pair<std::string, std::string>>& paths = {});
 // A PNG drawn by gnuplot from CSV data (sweep --plot, compare --plot): `script(data_path,
 // png_path)` is the gnuplot script; the data and script are scratch files beside `png`,
 // removed on return; the PNG is written atomically and never replaces one of `inputs`.

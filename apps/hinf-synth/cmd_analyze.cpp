@@ -13,13 +13,16 @@ void add_analyze(CLI::App& app, Action& action) {
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML");
   auto json = std::make_shared<bool>(false);
   auto points = std::make_shared<int>(41);
-  cmd->add_flag("--json", *json, "print JSON instead of text");
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.analyze/1) instead of text");
   cmd->add_option("--delta-points", *points, "grid points over [-delta_bar, delta_bar] (hill configs)")
       ->check(CLI::Range(2, 100001));
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::AnalysisOutcome a = synth::load_problem(args->config)->analyze(args->gains, {*points});
-      std::cout << (*json ? a.json + "\n" : a.report);
+      if (*json)
+        print_json(a.json);
+      else
+        std::cout << a.report;
       return 0;
     };
   });

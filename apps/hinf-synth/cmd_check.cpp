@@ -1,4 +1,4 @@
-// hinf-synth check CONFIG --golden GOLDEN.yaml [--rtol R]: regression of the synthesis
+// hinf-synth check CONFIG --golden GOLDEN.yaml [--rtol R] [--json]: regression of the synthesis
 // (synth::Problem::check). The designs are compared as transfer functions (docs/maths.md
 // (61), [D14]): another state-space realisation of the same filter or controller passes; a
 // real change fails. Because the optimum is not unique, a golden design whose transfer
@@ -17,14 +17,19 @@ void add_check(CLI::App& app, Action& action) {
   auto config = std::make_shared<std::string>();
   auto golden = std::make_shared<std::string>();
   auto rtol = std::make_shared<double>(1e-6);
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
   cmd->add_option("--golden", *golden, "golden gains or controller YAML")->required();
   cmd->add_option("--rtol", *rtol, "relative tolerance on gamma and on the designs' transfer-function difference")
       ->check(CLI::Range(1e-14, 1.0));
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.check/1) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::CheckOutcome c = synth::load_problem(*config)->check(*golden, *rtol);
-      std::cout << c.report;
+      if (*json)
+        print_json(c.json);
+      else
+        std::cout << c.report;
       return c.same ? 0 : 1;
     };
   });

@@ -1,4 +1,4 @@
-// hinf-synth codegen GAINS.yaml --prefix NAME --out DIR [--real double|float]
+// hinf-synth codegen GAINS.yaml --prefix NAME --out DIR [--real double|float] [--json]
 // Writes DIR/NAME.h, DIR/NAME.c (the filter, C99), DIR/NAME_vectors.h and
 // DIR/NAME_check.c (test vectors and an on-target check driver). docs/codegen.md.
 #include <filesystem>
@@ -7,7 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "cli_support.hpp"
 #include "commands.hpp"
+#include "hinf/synth/api.hpp"  // json_schema
 #include "hinf/common/input_file.hpp"
 #include "hinf/codegen/codegen.hpp"
 
@@ -25,6 +27,7 @@ void add_codegen(CLI::App& app, Action& action) {
     std::string real = "double";
     int vector_steps = 50;
     std::optional<double> tustin;  // s; a continuous-time controller discretised at this period
+    bool json = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -44,6 +47,7 @@ void add_codegen(CLI::App& app, Action& action) {
   cmd->add_option("--tustin", args->tustin,
                   "Period (s) at which a continuous-time controller file is discretised by Tustin's rule "
                   "(docs/maths.md (161))");
+  cmd->add_flag("--json", args->json, "print JSON (schema hinf-synth.codegen/1: the files written) instead of text");
   cmd->callback([args, &action] {
     action = [args]() -> int {
       hinf::codegen::CodegenOptions options;
@@ -57,9 +61,22 @@ void add_codegen(CLI::App& app, Action& action) {
       const std::string text = hinf::read_input_file(args->gains, "gains or controller file", hinf::kMaxGainsBytes);
       const hinf::codegen::GeneratedFiles files = hinf::codegen::generate_c_for_file(text, args->gains, options);
       hinf::codegen::write_generated_files(files, args->out, {args->gains});
-      for (const auto& f : files.files)
-        std::cout << "wrote " << (std::filesystem::path(args->out) / f.name).lexically_normal().string()
-                  << "\n";
+      Json written = Json::array();
+      for (const auto& f : files.files) {
+        const std::string path = (std::filesystem::path(args->out) / f.name).lexically_normal().string();
+        if (!args->json) std::cout << "wrote " << path << "\n";
+        written.push_back({{"path", path}, {"bytes", f.contents.size()}});
+      }
+      if (args->json) {
+        Json j;
+        j["schema"] = synth::json_schema("codegen");
+        j["input"] = args->gains;
+        j["prefix"] = args->prefix;
+        j["real"] = args->real;
+        j["out"] = args->out;
+        j["files"] = std::move(written);
+        print_json(j);
+      }
       return 0;
     };
   });

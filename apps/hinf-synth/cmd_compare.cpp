@@ -1,4 +1,4 @@
-// hinf-synth compare CONFIG GAINS [-o sigma.csv] [--plot sigma.png] [--points N]
+// hinf-synth compare CONFIG GAINS [-o sigma.csv] [--plot sigma.png] [--points N] [--json]
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/common/gnuplot.hpp"  // gnuplot_quoted
+#include "hinf/synth/api.hpp"  // json_schema
 #include "hinf/synth/comparison.hpp"
 
 namespace hinf::cli {
@@ -40,6 +41,35 @@ std::string sigma_plot_script(const std::string& data, const std::string& png, c
   return gp.str();
 }
 
+Json figures_json(const std::string& name, const synth::FilterFigures& f) {
+  const auto number = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  Json j;
+  j["name"] = name;
+  j["hinf_norm_nominal"] = number(f.hinf_norm_nominal);
+  j["hinf_peak_theta"] = number(f.hinf_peak_theta);
+  j["robust_bound"] = number(f.robust_bound);
+  j["h2_norm_nominal"] = number(f.h2_norm_nominal);
+  j["sigma"] = Json::array();
+  for (double s : f.sigma) j["sigma"].push_back(number(s));
+  return j;
+}
+
+// --json: both filters' figures and σ curves at every frequency (schema hinf-synth.compare/1).
+Json comparison_json(const std::string& config, const std::string& gains, const synth::Comparison& c,
+                     std::optional<double> T, bool filtered) {
+  Json j;
+  j["schema"] = synth::json_schema("compare");
+  j["config"] = config;
+  j["gains"] = gains;
+  j["sample_time_s"] = T ? Json(*T) : Json(nullptr);
+  j["theta_rad_per_sample"] = c.theta;
+  j["frequency_hz"] = Json::array();
+  for (double theta : c.theta) j["frequency_hz"].push_back(T ? Json(theta / (2 * kPi * *T)) : Json(nullptr));
+  j["filter"] = figures_json(gains, c.filter);
+  j["kalman"] = figures_json(kalman_name(filtered), c.kalman);
+  return j;
+}
+
 void print_row(const std::string& name, const synth::FilterFigures& f) {
   std::printf("%-28s %-24s %-24s %s\n", name.c_str(), num(f.hinf_norm_nominal).c_str(),
               std::isnan(f.robust_bound) ? "-" : num(f.robust_bound).c_str(), num(f.h2_norm_nominal).c_str());
@@ -56,19 +86,25 @@ void add_compare(CLI::App& app, Action& action) {
   auto csv = std::make_shared<std::string>();
   auto plot = std::make_shared<std::string>();
   auto points = std::make_shared<int>(400);
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman");
   cmd->add_option("--plot", *plot, "PNG of both sigma curves (gnuplot)");
   cmd->add_option("--points", *points, "log-spaced frequencies (default 400; both peaks are added)")
       ->check(CLI::Range(2, synth::kMaxComparisonPoints));
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.compare/1: the figures and both sigma curves) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::ConfigAndFilter in = synth::load_config_and_filter(args->config, args->gains);
       const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points,
                                                                  in.config.kalman_noise);
       const std::optional<double> T = in.config.sample_time();
-      std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
-      print_row(args->gains, c.filter);
-      print_row(kalman_name(in.filter.filtered()), c.kalman);
+      if (*json) {
+        print_json(comparison_json(args->config, args->gains, c, T, in.filter.filtered()));
+      } else {
+        std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
+        print_row(args->gains, c.filter);
+        print_row(kalman_name(in.filter.filtered()), c.kalman);
+      }
       const std::string data = sigma_csv(c, T);
       if (!csv->empty()) write_file_atomic(*csv, data, {args->config, args->gains});
       if (!plot->empty())

@@ -1,4 +1,4 @@
-// hinf-synth export-sdpa CONFIG -o FILE.dat-s: the synthesis LMI of any problem kind
+// hinf-synth export-sdpa CONFIG -o FILE.dat-s [--json]: the synthesis LMI of any problem kind
 // (synth::Problem::export_sdpa) in SDPA sparse format.
 #include <iostream>
 
@@ -13,12 +13,26 @@ void add_export_sdpa(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("export-sdpa", "write the synthesis LMI (a filter config's, or a controller config's) in SDPA sparse format (for CSDP, SDPA, ...)");
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
   cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write")->required();
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.export-sdpa/1: what was written) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      hinf::write_file_atomic(*output, synth::load_problem(*config)->export_sdpa(), {*config});
-      std::cout << "SDPA problem written to " << *output << "\n";
+      const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
+      const std::string sdpa = problem->export_sdpa();
+      hinf::write_file_atomic(*output, sdpa, {*config});
+      if (*json) {
+        Json j;
+        j["schema"] = synth::json_schema("export-sdpa");
+        j["kind"] = std::string(problem->kind());
+        j["config"] = *config;
+        j["output"] = *output;
+        j["bytes"] = sdpa.size();
+        print_json(j);
+      } else {
+        std::cout << "SDPA problem written to " << *output << "\n";
+      }
       return 0;
     };
   });

@@ -1,4 +1,4 @@
-// hinf-synth kalman CONFIG -o GAINS.yaml: the Kalman predictor of the config's plant (or, with
+// hinf-synth kalman CONFIG -o GAINS.yaml [--json]: the Kalman predictor of the config's plant (or, with
 // filter.estimate: filtered, the Kalman filter x̂(k|k), docs/maths.md (143)).
 #include <iostream>
 
@@ -15,13 +15,18 @@ void add_kalman(CLI::App& app, Action& action) {
                 "worst-case gain it achieves: the H2 reference for the H-infinity filter (filter.estimate: filtered: the Kalman filter x_hat(k|k))");
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML (system matrices or hill model)")->required();
   cmd->add_option("-o,--output", *output, "gains YAML to write (atomically)")->required();
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.kalman/1: gamma and the written file's contents) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
       hinf::write_file_atomic(*output, r.file, {*config});
-      std::cout << r.report << r.file_contents << " written to " << *output << "\n";
+      if (*json)
+        print_json(r.json, {{"output", *output}});
+      else
+        std::cout << r.report << r.file_contents << " written to " << *output << "\n";
       return 0;
     };
   });

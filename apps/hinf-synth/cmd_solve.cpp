@@ -1,4 +1,4 @@
-// hinf-synth solve CONFIG -o FILE.yaml [--verbose]: the certified design of any problem kind
+// hinf-synth solve CONFIG -o FILE.yaml [--verbose] [--json]: the certified design of any problem kind
 // (synth::Problem::solve), its file written atomically, its report printed.
 #include <cstdio>
 #include <iostream>
@@ -16,9 +16,11 @@ void add_solve(CLI::App& app, Action& action) {
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   auto verbose = std::make_shared<bool>(false);
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML (system matrices, hill model, or controller)")->required();
   cmd->add_option("-o,--output", *output, "gains or controller YAML to write (atomically)")->required();
   cmd->add_flag("-v,--verbose", *verbose, "coefficient ranges and the solver's iteration table on stderr");
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.solve/1: gamma and the written file's contents) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
@@ -31,7 +33,10 @@ void add_solve(CLI::App& app, Action& action) {
       }
       const synth::SolveOutcome r = problem->solve(observers);
       hinf::write_file_atomic(*output, r.file, {*config});
-      std::cout << r.report << r.file_contents << " written to " << *output << "\n";
+      if (*json)
+        print_json(r.json, {{"output", *output}});
+      else
+        std::cout << r.report << r.file_contents << " written to " << *output << "\n";
       return 0;
     };
   });

@@ -10,12 +10,12 @@
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/common/gnuplot.hpp"
 #include "hinf/common/input_file.hpp"
+#include "hinf/synth/api.hpp"  // json_schema
 #include "hinf/synth/sweep.hpp"
 
 namespace hinf::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 struct SweepArgs {
   std::string config, param, max_feasible, csv, json, plot;
@@ -115,6 +115,7 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
   if (!a.csv.empty()) write_file_atomic(a.csv, csv, {a.config});
   if (!a.json.empty()) {
     Json j = Json::object();
+    j["schema"] = synth::json_schema("sweep");
     j["config"] = a.config;
     j["parameter"] = name;
     j["points"] = Json::array();
@@ -160,6 +161,7 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
   }
   if (!a.json.empty()) {
     Json j = Json::object();
+    j["schema"] = synth::json_schema("max-feasible");
     j["config"] = a.config;
     j["parameter"] = name;
     j["largest_certified"] = point_json(best);

@@ -1,4 +1,4 @@
-// hinf-synth verify CONFIG FILE.yaml: re-derive the certificate of a gains or controller file
+// hinf-synth verify CONFIG FILE.yaml [--json]: re-derive the certificate of a gains or controller file
 // at the γ it claims (synth::Problem::verify); exit 1 if it does not hold.
 #include <iostream>
 
@@ -11,10 +11,15 @@ namespace hinf::cli {
 void add_verify(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config, or of a controller file against a controller config");
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML (must state gamma)");
+  auto json = std::make_shared<bool>(false);
+  cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.verify/1) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::VerifyOutcome v = synth::load_problem(args->config)->verify(args->gains);
-      std::cout << v.report;
+      if (*json)
+        print_json(v.json);
+      else
+        std::cout << v.report;
       return v.holds ? 0 : 1;
     };
   });

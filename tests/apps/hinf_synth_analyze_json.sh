@@ -28,7 +28,8 @@ def refuse(name):
 assert text.endswith("\n") and text.count("\n") == 1, "not one line"
 d = json.loads(text, parse_constant=refuse)
 assert d["gains"] == path, "gains %r != %r" % (d["gains"], path)
-want = ["gains", "claimed_gamma", "spectral_radius_nominal", "hinf_norm_nominal",
+assert d["schema"] == "hinf-synth.analyze/1" and d["kind"] == "filter", d["schema"]
+want = ["schema", "kind", "config", "gains", "claimed_gamma", "spectral_radius_nominal", "hinf_norm_nominal",
         "hinf_norm_peak_frequency", "sample_time_s", "hinf_norm_peak_frequency_hz",
         "spectral_radius_sampled_max", "robust_bound", "worst_F_gain", "worst_F", "worst_F_evaluations",
         "worst_delta", "worst_delta_hinf_norm", "delta_grid"]
@@ -40,7 +41,7 @@ assert abs(d["hinf_norm_peak_frequency_hz"] - d["hinf_norm_peak_frequency"] / (2
 assert len(d["delta_grid"]) == 3, d["delta_grid"]
 for p in d["delta_grid"]:
     assert list(p) == ["delta", "spectral_radius", "hinf_norm"], list(p)
-for k in want[2:10] + ["worst_F_evaluations", "worst_delta", "worst_delta_hinf_norm"]:
+for k in want[5:13] + ["worst_F_evaluations", "worst_delta", "worst_delta_hinf_norm"]:
     assert isinstance(d[k], (int, float)), k
 # the worst case found over F (docs/maths.md (140)) lies between the nominal norm and the bound
 assert d["hinf_norm_nominal"] <= d["worst_F_gain"] * (1 + 1e-8) and d["worst_F_gain"] <= d["robust_bound"] * (1 + 1e-8), d

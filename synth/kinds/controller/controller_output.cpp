@@ -46,6 +46,16 @@ void emit_poles(YAML::Emitter& out, std::vector<std::complex<double>> poles) {
 
 }  // namespace
 
+std::string controller_certificate_yaml(const ControllerCertificate& certificate, double gamma, bool discrete,
+                                        bool disk) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  emit_certificate(out, certificate, gamma, discrete, disk);
+  out << YAML::EndMap;
+  return out.c_str();
+}
+
 std::string format_controller_yaml(const ControllerSynthesisResult& r, const hinf::GeneralisedPlant& P,
                                    const ControllerDesign& design, const GainsProvenance& pv) {
   const bool discrete = P.time == hinf::TimeDomain::Discrete;

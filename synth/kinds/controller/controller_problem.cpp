@@ -11,6 +11,7 @@
 #include "hinf/runtime_yaml/controller_file.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/controller_output.hpp"
+#include "job_json.hpp"
 #include "kinds.hpp"
 #include "report_text.hpp"
 
@@ -23,8 +24,9 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
 
   SolveOutcome solve(const JobObservers& observers) const override {
     ControllerSynthesisResult r = synthesize_controller(cfg_.plant, cfg_.settings, cfg_.design, observers.on_iteration);
-    return {r.gamma, format_controller_yaml(r, cfg_.plant, cfg_.design, {cfg_.path, cfg_.sha256, period()}),
-            "controller", controller_report::solve(r, cfg_), std::move(r)};
+    std::string file = format_controller_yaml(r, cfg_.plant, cfg_.design, {cfg_.path, cfg_.sha256, period()});
+    std::string json = job_json::solved("solve", "controller", cfg_.path, r.gamma, "controller", file);
+    return {r.gamma, std::move(file), "controller", controller_report::solve(r, cfg_), std::move(json), std::move(r)};
   }
 
   AnalysisOutcome analyze(const std::string& path, const AnalysisOptions&) const override {
@@ -33,14 +35,15 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     ControllerCertificate c =
         certify::certify_controller(cfg_.plant, in.controller, in.file.gamma.value_or(INFINITY), cfg_.design.checks());
     return {controller_report::analysis(path, in.file.gamma, c, in.file.discrete),
-            controller_report::analysis_json(path, in.file.gamma, c), std::move(c)};
+            controller_report::analysis_json(cfg_.path, path, in.file.gamma, c), std::move(c)};
   }
 
   VerifyOutcome verify(const std::string& path) const override {
     const Loaded in = load(path);
     const double gamma = stated_gamma(in.file.gamma, path + ": no 'gamma' to verify (use 'analyze')");
     ControllerVerification v = verify_controller(cfg_, in.controller, gamma);
-    return {v.holds, controller_report::verification(gamma, v, in.file.discrete), std::move(v)};
+    return {v.holds, controller_report::verification(gamma, v, in.file.discrete),
+            controller_report::verification_json(cfg_.path, path, gamma, v, in.file.discrete, disk()), std::move(v)};
   }
 
   CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers) const override {
@@ -50,7 +53,10 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
         synthesize_controller(cfg_.plant, cfg_.settings, cfg_.design, observers.on_iteration);
     ControllerGoldenComparison cmp = compare_controller_with_golden(cfg_, in.controller, gamma, now, rtol);
     return {cmp.same(), now.gamma,
-            controller_report::check(gamma, in.file.config_sha256, cfg_.sha256, now.gamma, cmp, rtol), std::move(cmp)};
+            controller_report::check(gamma, in.file.config_sha256, cfg_.sha256, now.gamma, cmp, rtol),
+            controller_report::check_json(cfg_.path, golden_path, gamma, in.file.config_sha256, cfg_.sha256, now.gamma,
+                                          cmp, rtol, in.file.discrete, disk()),
+            std::move(cmp)};
   }
 
   std::string export_sdpa() const override {
@@ -70,6 +76,7 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     runtime_yaml::ControllerFile file;
     Controller controller;
   };
+  bool disk() const { return cfg_.design.pole_disk_radius.has_value(); }
   std::optional<double> period() const {
     return cfg_.plant.time == TimeDomain::Discrete ? std::optional<double>(cfg_.plant.sample_time) : std::nullopt;
   }

@@ -1,6 +1,8 @@
 // The controller kind's reports (controller_report.hpp).
 #include "controller_report.hpp"
 
+#include "hinf/synth/controller_output.hpp"
+#include "job_json.hpp"
 #include "report_text.hpp"
 
 namespace hinf::synth::controller_report {
@@ -18,6 +20,14 @@ std::string certificate_lines(const ControllerCertificate& c, bool discrete) {
     out += "robust channel        ‖T_qp‖∞ = " + num(*c.robust_channel_norm) +
            (c.robustly_stable ? " < 1 (small gain: robustly stable)" : " >= 1  FAIL") + "\n";
   return out;
+}
+
+// The certificate section (controller_output.hpp) as JSON at `gamma`, without the LMI's
+// eigenvalue and cond(N): those belong to a synthesised point, which verify and check do not have.
+Json certificate_json(const ControllerCertificate& c, double gamma, bool discrete, bool disk) {
+  Json j = job_json::from_yaml(controller_certificate_yaml(c, gamma, discrete, disk))["certificate"];
+  for (const char* key : {"lmi_max_eigenvalue", "cond_N"}) j.erase(key);
+  return j;
 }
 
 }  // namespace
@@ -56,9 +66,9 @@ std::string analysis(const std::string& controller_path, std::optional<double> c
          (claimed_gamma ? " (claims gamma " + num(*claimed_gamma) + ")" : "") + "\n" + certificate_lines(c, discrete);
 }
 
-std::string analysis_json(const std::string& controller_path, std::optional<double> claimed_gamma,
-                          const ControllerCertificate& c) {
-  Json j = Json::object();
+std::string analysis_json(const std::string& config_path, const std::string& controller_path,
+                          std::optional<double> claimed_gamma, const ControllerCertificate& c) {
+  Json j = job_json::envelope("analyze", "controller", config_path);
   j["controller"] = controller_path;
   j["claimed_gamma"] = claimed_gamma ? json_num(*claimed_gamma) : Json(nullptr);
   j["closed_loop_stable"] = c.stable;
@@ -96,6 +106,36 @@ std::string check(double golden_gamma, const std::string& golden_sha256, const s
     out += "note: the golden file was generated from a config with another sha256 (" + golden_sha256.substr(0, 12) +
            "... vs " + config_sha256.substr(0, 12) + "...)\n";
   return out + (cmp.same() ? "same (rtol " + num(rtol) + ")\n" : "CHANGED (rtol " + num(rtol) + ")\n");
+}
+
+std::string verification_json(const std::string& config_path, const std::string& controller_path,
+                              double claimed_gamma, const ControllerVerification& v, bool discrete, bool disk) {
+  Json j = job_json::envelope("verify", "controller", config_path);
+  j["controller"] = controller_path;
+  j["claimed_gamma"] = json_num(claimed_gamma);
+  j["holds"] = v.holds;
+  j["certificate"] = certificate_json(v.certificate, claimed_gamma, discrete, disk);
+  return json_line(j);
+}
+
+std::string check_json(const std::string& config_path, const std::string& golden_path, double golden_gamma,
+                       const std::string& golden_sha256, const std::string& config_sha256, double gamma_now,
+                       const ControllerGoldenComparison& cmp, double rtol, bool discrete, bool disk) {
+  Json j = job_json::envelope("check", "controller", config_path);
+  j["golden"] = golden_path;
+  j["rtol"] = json_num(rtol);
+  j["same"] = cmp.same();
+  j["gamma_golden"] = json_num(golden_gamma);
+  j["gamma_now"] = json_num(gamma_now);
+  j["gamma_relative_change"] = json_num(cmp.gamma_relative_change);
+  j["same_gamma"] = cmp.same_gamma;
+  j["transfer_function_difference"] = cmp.controller_difference ? json_num(*cmp.controller_difference) : Json(nullptr);
+  j["same_design"] = cmp.same_controller;
+  j["golden_recertified"] =
+      cmp.golden_recertified ? certificate_json(*cmp.golden_recertified, golden_gamma, discrete, disk) : Json(nullptr);
+  j["golden_config_sha256"] = golden_sha256.empty() ? Json(nullptr) : Json(golden_sha256);
+  j["config_sha256"] = config_sha256;
+  return json_line(j);
 }
 
 }  // namespace hinf::synth::controller_report

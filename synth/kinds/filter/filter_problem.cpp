@@ -7,6 +7,7 @@
 #include "hinf/synth/config.hpp"
 #include "hinf/synth/filter_file.hpp"
 #include "hinf/synth/gains_output.hpp"
+#include "job_json.hpp"
 #include "kinds.hpp"
 
 namespace hinf::synth {
@@ -20,22 +21,22 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
     if (observers.on_log) filter_report::log_before_solve(cfg_.plant, cfg_.settings, observers.on_log);
     SynthesisResult r = synthesize(cfg_.plant, cfg_.settings, observers.on_iteration);
     if (observers.on_log) filter_report::log_after_solve(r.solver, observers.on_log);
-    return {r.gamma, format_gains_yaml(r, {cfg_.path, cfg_.sha256, cfg_.sample_time()}), "gains",
-            filter_report::solve(r), std::move(r)};
+    return outcome("solve", filter_report::solve(r), std::move(r));
   }
 
   AnalysisOutcome analyze(const std::string& gains_path, const AnalysisOptions& options) const override {
     const Loaded in = load(gains_path);
     FilterAnalysis a = analyze_filter(cfg_.plant, cfg_.hill, in.filter, cfg_.settings, options.delta_points);
     return {filter_report::analysis(gains_path, in.gains, a, cfg_.sample_time(), cfg_.plant.uncertain()),
-            filter_report::analysis_json(gains_path, in.gains, a, cfg_.sample_time()), std::move(a)};
+            filter_report::analysis_json(cfg_.path, gains_path, in.gains, a, cfg_.sample_time()), std::move(a)};
   }
 
   VerifyOutcome verify(const std::string& gains_path) const override {
     const Loaded in = load(gains_path);
     const double gamma = stated_gamma(in.gains.gamma, gains_path + ": no 'gamma' to verify (use 'analyze' for a bound)");
     Verification v = verify_gains(cfg_, in.filter, gamma);
-    return {v.holds, filter_report::verification(in.filter, gamma, v), std::move(v)};
+    return {v.holds, filter_report::verification(in.filter, gamma, v),
+            filter_report::verification_json(cfg_.path, gains_path, in.filter, gamma, v), std::move(v)};
   }
 
   CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers) const override {
@@ -43,13 +44,14 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
     const double gamma = stated_gamma(in.gains.gamma, golden_path + ": golden file has no 'gamma'");
     const SynthesisResult now = synthesize(cfg_.plant, cfg_.settings, observers.on_iteration);
     GoldenComparison cmp = compare_with_golden(cfg_, in.filter, gamma, now, rtol);
-    return {cmp.same(), now.gamma, filter_report::check(in.gains, cfg_.sha256, now.gamma, cmp, rtol), std::move(cmp)};
+    return {cmp.same(), now.gamma, filter_report::check(in.gains, cfg_.sha256, now.gamma, cmp, rtol),
+            filter_report::check_json(cfg_.path, golden_path, in.gains, in.filter, cfg_.sha256, now.gamma, cmp, rtol),
+            std::move(cmp)};
   }
 
   SolveOutcome kalman() const override {
     SynthesisResult r = kalman_predictor(cfg_.plant, cfg_.settings, cfg_.kalman_noise);
-    return {r.gamma, format_gains_yaml(r, {cfg_.path, cfg_.sha256, cfg_.sample_time()}), "gains",
-            filter_report::kalman(r), std::move(r)};
+    return outcome("kalman", filter_report::kalman(r), std::move(r));
   }
 
   std::string export_sdpa() const override {
@@ -59,6 +61,12 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
   }
 
  private:
+  // solve's or kalman's outcome: the gains file, the report, the JSON.
+  SolveOutcome outcome(const char* job, std::string report, SynthesisResult r) const {
+    std::string file = format_gains_yaml(r, {cfg_.path, cfg_.sha256, cfg_.sample_time()});
+    std::string json = job_json::solved(job, "filter", cfg_.path, r.gamma, "gains", file);
+    return {r.gamma, std::move(file), "gains", std::move(report), std::move(json), std::move(r)};
+  }
   struct Loaded {
     runtime_yaml::GainsFile gains;
     Filter filter;

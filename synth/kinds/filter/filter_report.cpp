@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "hinf/sdp/time_model.hpp"
+#include "hinf/synth/gains_output.hpp"
+#include "job_json.hpp"
 #include "report_text.hpp"
 
 namespace hinf::synth::filter_report {
@@ -47,6 +49,17 @@ std::string stopped_short_line(const SolverInfo& s) {
   return "the solver stopped short of its gap tolerance (" +
          (s.gap_certified ? "certified relative gap " + num(s.relative_gap) : "gap not certified: " + s.gap_detail) +
          "); the filter is the last centred point's, certified\n";
+}
+
+
+// The certificate section (gains_output.hpp) as JSON, without check 1 and the recovery's
+// conditioning: those belong to a synthesised point, which verify and check do not have.
+Json certificate_json(const Certificate& c, FilterForm form) {
+  Json j = job_json::from_yaml(certificate_yaml(c, form))["certificate"];
+  for (const char* key : {"lmi_negative_definite", "lmi_max_eigenvalue", "lmi_max_eigenvalue_relative", "cond_S",
+                          "cond_R_minus_S", "cond_P"})
+    j.erase(key);
+  return j;
 }
 
 }  // namespace
@@ -125,9 +138,9 @@ std::string analysis(const std::string& gains_path, const runtime_yaml::GainsFil
   return out;
 }
 
-std::string analysis_json(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,
-                          std::optional<double> T) {
-  Json j = Json::object();
+std::string analysis_json(const std::string& config_path, const std::string& gains_path,
+                          const runtime_yaml::GainsFile& g, const FilterAnalysis& a, std::optional<double> T) {
+  Json j = job_json::envelope("analyze", "filter", config_path);
   j["gains"] = gains_path;
   j["claimed_gamma"] = g.gamma ? json_num(*g.gamma) : Json(nullptr);
   j["spectral_radius_nominal"] = json_num(a.spectral_radius_nominal);
@@ -204,6 +217,38 @@ std::string check(const runtime_yaml::GainsFile& g, const std::string& config_sh
     out += "note: the golden file was generated from a config with another sha256 (" + g.config_sha256.substr(0, 12) +
            "... vs " + config_sha256.substr(0, 12) + "...)\n";
   return out + (cmp.same() ? "same (rtol " + num(rtol) + ")\n" : "CHANGED (rtol " + num(rtol) + ")\n");
+}
+
+std::string verification_json(const std::string& config_path, const std::string& gains_path, const Filter& f,
+                              double claimed_gamma, const Verification& v) {
+  Json j = job_json::envelope("verify", "filter", config_path);
+  j["gains"] = gains_path;
+  j["claimed_gamma"] = json_num(claimed_gamma);
+  j["holds"] = v.holds;
+  j["achieved_bound"] = v.achieved_bound ? json_num(*v.achieved_bound) : Json(nullptr);
+  j["achieved_unknown_reason"] = v.achieved_unknown_reason.empty() ? Json(nullptr) : Json(v.achieved_unknown_reason);
+  j["certificate"] = certificate_json(v.certificate, f.form);
+  return json_line(j);
+}
+
+std::string check_json(const std::string& config_path, const std::string& golden_path, const runtime_yaml::GainsFile& g,
+                       const Filter& golden_filter, const std::string& config_sha256, double gamma_now,
+                       const GoldenComparison& cmp, double rtol) {
+  Json j = job_json::envelope("check", "filter", config_path);
+  j["golden"] = golden_path;
+  j["rtol"] = json_num(rtol);
+  j["same"] = cmp.same();
+  j["gamma_golden"] = json_num(*g.gamma);
+  j["gamma_now"] = json_num(gamma_now);
+  j["gamma_relative_change"] = json_num(cmp.gamma_relative_change);
+  j["same_gamma"] = cmp.same_gamma;
+  j["transfer_function_difference"] = json_num(cmp.filter_difference.relative);
+  j["same_design"] = cmp.same_filter;
+  j["golden_recertified"] =
+      cmp.golden_recertified ? certificate_json(*cmp.golden_recertified, golden_filter.form) : Json(nullptr);
+  j["golden_config_sha256"] = g.config_sha256.empty() ? Json(nullptr) : Json(g.config_sha256);
+  j["config_sha256"] = config_sha256;
+  return json_line(j);
 }
 
 }  // namespace hinf::synth::filter_report

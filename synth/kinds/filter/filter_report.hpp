@@ -1,5 +1,5 @@
 // What the filter kind's jobs report (filter_problem.cpp): the text a front end prints and
-// analyze's JSON, formatted from the results; no maths, no reading.
+// the jobs' JSON, formatted from the results; no maths, no reading.
 #pragma once
 #include <functional>
 #include <optional>
@@ -24,10 +24,16 @@ std::string solve(const SynthesisResult& r);
 std::string kalman(const SynthesisResult& r);
 std::string analysis(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,
                      std::optional<double> sample_time, bool uncertain);
-std::string analysis_json(const std::string& gains_path, const runtime_yaml::GainsFile& g, const FilterAnalysis& a,
-                          std::optional<double> sample_time);
+// The jobs' JSON (job_json.hpp): `config_path` the config's source name.
+std::string analysis_json(const std::string& config_path, const std::string& gains_path,
+                          const runtime_yaml::GainsFile& g, const FilterAnalysis& a, std::optional<double> sample_time);
 std::string verification(const Filter& f, double claimed_gamma, const Verification& v);
 std::string check(const runtime_yaml::GainsFile& golden, const std::string& config_sha256, double gamma_now,
                   const GoldenComparison& cmp, double rtol);
+std::string verification_json(const std::string& config_path, const std::string& gains_path, const Filter& f,
+                              double claimed_gamma, const Verification& v);
+std::string check_json(const std::string& config_path, const std::string& golden_path, const runtime_yaml::GainsFile& golden,
+                       const Filter& golden_filter, const std::string& config_sha256, double gamma_now,
+                       const GoldenComparison& cmp, double rtol);
 
 }  // namespace hinf::synth::filter_report

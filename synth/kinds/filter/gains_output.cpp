@@ -91,6 +91,15 @@ void emit_solver(YAML::Emitter& out, const SolverInfo& s) {
 
 }  // namespace
 
+std::string certificate_yaml(const Certificate& certificate, FilterForm form) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  emit_certificate(out, certificate, form);
+  out << YAML::EndMap;
+  return out.c_str();
+}
+
 std::string format_gains_yaml(const SynthesisResult& r, const GainsProvenance& pv) {
   YAML::Emitter out;
   out.SetDoublePrecision(17);

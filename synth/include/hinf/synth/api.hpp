@@ -36,6 +36,9 @@ struct SolveOutcome {
   std::string file;    // the file to write: hinf-gains/1 (filters) or hinf-controller/1 (controllers)
   std::string file_contents;  // what the file holds, for people: "gains", "controller"
   std::string report;  // the summary a front end prints (lines ending in '\n')
+  // The same as one line of JSON (no newline): schema "hinf-synth.solve/1" (or ".kalman/1"),
+  // kind, config, gamma, file_contents and the file itself under "file" (docs/file-formats.md).
+  std::string json;
   std::variant<SynthesisResult, ControllerSynthesisResult> result;
 };
 
@@ -47,7 +50,7 @@ struct AnalysisOptions {
 // `analyze`: the figures of a given gains or controller file on the problem (no verdict).
 struct AnalysisOutcome {
   std::string report;  // text
-  std::string json;    // the same figures as one line of JSON (no newline)
+  std::string json;    // the same figures as one line of JSON (no newline), schema "hinf-synth.analyze/1"
   std::variant<FilterAnalysis, ControllerCertificate> result;
 };
 
@@ -55,6 +58,7 @@ struct AnalysisOutcome {
 struct VerifyOutcome {
   bool holds = false;
   std::string report;
+  std::string json;  // one line, schema "hinf-synth.verify/1": holds, the claimed γ, checks 2–4
   std::variant<Verification, ControllerVerification> result;
 };
 
@@ -63,6 +67,7 @@ struct CheckOutcome {
   bool same = false;
   double gamma_now = 0;
   std::string report;
+  std::string json;  // one line, schema "hinf-synth.check/1"
   std::variant<GoldenComparison, ControllerGoldenComparison> result;
 };
 
@@ -92,6 +97,11 @@ class Problem {
   // Error(InvalidInput) for a kind without one (a controller config).
   virtual SolveOutcome kalman() const = 0;
 };
+
+// The `schema` key of a job's JSON, "hinf-synth.<job>/1" (docs/file-formats.md "JSON"): the
+// outcomes' `json` above, and the JSON the front ends write of what they wrote (export-sdpa,
+// codegen) and of the library calls without an outcome (compare, sweep).
+std::string json_schema(std::string_view job);
 
 // Parses config text of any kind; `source_name` names it in messages and in the outputs'
 // provenance. Error(InvalidInput) naming the key, dimension or value.

@@ -13,4 +13,9 @@ namespace hinf::synth {
 std::string format_controller_yaml(const ControllerSynthesisResult& result, const hinf::GeneralisedPlant& plant,
                                    const ControllerDesign& design, const GainsProvenance& provenance);
 
+// The file's `certificate:` section alone at `gamma`, a YAML document of one key (verify's
+// and check's JSON); `disk`: the design asks for a pole disk.
+std::string controller_certificate_yaml(const ControllerCertificate& certificate, double gamma, bool discrete,
+                                        bool disk);
+
 }  // namespace hinf::synth

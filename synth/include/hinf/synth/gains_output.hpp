@@ -17,6 +17,9 @@ struct GainsProvenance {
 // `timing:` section (last in the file).
 std::string format_gains_yaml(const SynthesisResult& result, const GainsProvenance& provenance);
 
+// The file's `certificate:` section alone, a YAML document of one key (verify's JSON).
+std::string certificate_yaml(const Certificate& certificate, FilterForm form);
+
 const char* tool_version();
 
 }  // namespace hinf::synth
