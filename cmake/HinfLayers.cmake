@@ -19,6 +19,7 @@ set(HINF_LAYER_hinf_certify       hinf_models hinf_common)
 set(HINF_LAYER_hinf_synth         hinf_certify hinf_sdp hinf_lmi hinf_common hinf_models
                                   hinf_runtime_yaml hinf_runtime)
 set(HINF_LAYER_hinf_codegen       hinf_runtime_yaml hinf_runtime hinf_models hinf_common)
+set(HINF_LAYER_hinf_matfile      hinf_common)
 set(HINF_LAYER_hinf_sim           hinf_runtime hinf_runtime_yaml hinf_synth hinf_certify hinf_sdp
                                   hinf_lmi hinf_common hinf_models)
 
@@ -33,6 +34,7 @@ set(HINF_EXTERNAL_hinf_sdp        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT)
 set(HINF_EXTERNAL_hinf_certify    Eigen3::Eigen yaml-cpp LAPACK)
 set(HINF_EXTERNAL_hinf_synth      Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
                                   nlohmann_json::nlohmann_json)
+set(HINF_EXTERNAL_hinf_matfile   Eigen3::Eigen yaml-cpp nlohmann_json::nlohmann_json PkgConfig::MATIO)
 set(HINF_EXTERNAL_hinf_sim        Eigen3::Eigen yaml-cpp PkgConfig::IPOPT PkgConfig::NETTLE LAPACK
                                   Threads::Threads nlohmann_json::nlohmann_json Boost::headers)
 

@@ -1,4 +1,4 @@
-// hinf-sim SCENARIO.yaml --out DIR [--runs N] [--seed S] [--jobs J] [--json]
+// hinf-sim SCENARIO.yaml --out DIR [--runs N] [--seed S] [--jobs J] [--format csv|mat] [--json]
 // Exit codes: 0 ok, 2 invalid input or unwritable output, 3 infeasible synthesis,
 // 4 numerical failure (synthesis certificate, non-finite truth).
 #include <CLI/CLI.hpp>
@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "hinf/common/input_file.hpp"
+#include "hinf/matfile/mat_file.hpp"
 #include "hinf/sim/family.hpp"
 #include "hinf/sim/plots.hpp"
 #include "hinf/sim/simulation_error.hpp"
@@ -59,7 +60,23 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
   app.add_flag("--quiet,-q", o.quiet, "no progress bar");
   app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
+  app.add_option("--format", o.format, "csv (default) or mat: also run.mat, every CSV table and the summary as MATLAB variables")
+      ->check(CLI::IsMember({"csv", "mat"}));
   app.add_flag("--json", o.json, "print JSON (schema hinf-sim.run/1: the files written and summary.json) when done");
+}
+
+// --format mat: run.mat beside the run directory's files, a variable per table (trajectory,
+// runs, …: a struct of columns named by the CSV's header) and `summary` (summary.json's object).
+void add_mat_file(hinf::sim::CampaignResult& result) {
+  hinf::matfile::Json variables = hinf::matfile::Json::object();
+  for (const auto& [name, bytes] : result.files) {
+    const std::string stem = std::filesystem::path(name).stem().string();
+    if (std::filesystem::path(name).extension() == ".csv")
+      variables[stem] = hinf::matfile::csv_columns(bytes, name);
+    else if (name == "summary.json")
+      variables["summary"] = hinf::matfile::Json::parse(bytes);
+  }
+  result.files.emplace_back("run.mat", hinf::matfile::mat_file_bytes(variables, "MATLAB 5.0 MAT-file, hinf-sim run"));
 }
 
 // --json: one line on stdout once the run directory is written: what it holds and the
@@ -117,6 +134,7 @@ int run(int argc, char** argv) {
     return fail(e.what(), hinf::ErrorCode::NumericalFailure);
   }
   try {
+    if (o.format == "mat") add_mat_file(result);
     hinf::sim::write_campaign(result, o.out_dir, o.scenario_path, !o.no_plots);
   } catch (const hinf::Error& e) {
     return fail(e.what(), hinf::ErrorCode::InvalidInput);

@@ -18,6 +18,7 @@ struct Options {
   std::optional<double> duration;
   bool no_plots = false, quiet = false, verbose = false;
   bool json = false;  // the run directory's description and summary.json on stdout (docs/experiments.md)
+  std::string format = "csv";  // "mat": run.mat beside the CSV files
 };
 
 // The library's status lines on stderr ("hinf-sim: synthesising from PATH ..."), or nothing.

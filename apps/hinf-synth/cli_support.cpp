@@ -6,6 +6,7 @@
 #include "hinf/common/gnuplot.hpp"
 
 #include "hinf/common/number_text.hpp"
+#include "hinf/matfile/mat_file.hpp"
 #include "hinf/sdp/time_model.hpp"
 
 #include <cmath>
@@ -25,6 +26,19 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
 }
 
 std::string num(double v) { return hinf::significant_text(v, 10); }
+
+void add_format_option(CLI::App& cmd, std::string& format) {
+  cmd.add_option("--format", format, "file format: yaml or mat (MATLAB; default: mat if the output ends in .mat)")
+      ->check(CLI::IsMember({"yaml", "mat"}));
+}
+
+std::string file_bytes(const synth::SolveOutcome& r, const std::string& format, const std::string& output) {
+  const bool mat = format == "mat" || (format.empty() && output.size() > 4 && output.substr(output.size() - 4) == ".mat");
+  if (!mat) return r.file;
+  const Json file = Json::parse(r.json)["file"];  // the file's keys and values (synth/api.hpp)
+  return matfile::mat_file_bytes(file, "MATLAB 5.0 MAT-file, " + file["format"].get<std::string>() + " written by " +
+                                           file["tool"].get<std::string>());
+}
 
 void print_json(const Json& j) { std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n"; }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/synth/api.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "verbose_log.hpp"
 
@@ -25,6 +26,12 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
 
 // "%.10g"
 std::string num(double v);
+// --format yaml|mat of the file solve and kalman write (default: mat for an output ending in
+// ".mat", else yaml).
+void add_format_option(CLI::App& cmd, std::string& format);
+// The bytes of that file: the YAML as it is, or a MAT-file of the same keys
+// (hinf/matfile/mat_file.hpp; docs/file-formats.md "MATLAB files").
+std::string file_bytes(const synth::SolveOutcome& r, const std::string& format, const std::string& output);
 using Json = nlohmann::ordered_json;  // keys in the order written
 // --json: one line of JSON on stdout (a path that is not UTF-8 with U+FFFD rather than refused).
 void print_json(const Json& j);

@@ -19,10 +19,12 @@ void add_kalman(CLI::App& app, Action& action) {
   cmd->add_option("config", *config, "config YAML (system matrices or hill model)")->required();
   cmd->add_option("-o,--output", *output, "gains YAML to write (atomically)")->required();
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.kalman/1: gamma and the written file's contents) instead of text");
+  auto format = std::make_shared<std::string>();
+  add_format_option(*cmd, *format);
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
-      hinf::write_file_atomic(*output, r.file, {*config});
+      hinf::write_file_atomic(*output, file_bytes(r, *format, *output), {*config});
       if (*json)
         print_json(r.json, {{"output", *output}});
       else

@@ -21,6 +21,8 @@ void add_solve(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", *output, "gains or controller YAML to write (atomically)")->required();
   cmd->add_flag("-v,--verbose", *verbose, "coefficient ranges and the solver's iteration table on stderr");
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.solve/1: gamma and the written file's contents) instead of text");
+  auto format = std::make_shared<std::string>();
+  add_format_option(*cmd, *format);
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
@@ -32,7 +34,7 @@ void add_solve(CLI::App& app, Action& action) {
         observers.on_log = [&log](const std::string& line) { log->line("%s", line.c_str()); };
       }
       const synth::SolveOutcome r = problem->solve(observers);
-      hinf::write_file_atomic(*output, r.file, {*config});
+      hinf::write_file_atomic(*output, file_bytes(r, *format, *output), {*config});
       if (*json)
         print_json(r.json, {{"output", *output}});
       else

@@ -25,6 +25,9 @@ const char* kind_of(mode_t mode) {
   return "it is not a regular file";
 }
 
+// The first bytes of a level-5 MAT-file's header (the tools write them with --format mat).
+constexpr const char* kMatFileMagic = "MATLAB 5.0 MAT-file";
+
 std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 // Closes the descriptor on every path out of read_input_file.
@@ -58,6 +61,8 @@ std::string read_input_file(const std::string& path, const std::string& what, st
     if (bytes.size() > max_bytes)  // the file grew while it was read
       refuse(path, what, "more than the " + mib(max_bytes) + " a " + what + " may have");
   }
+  if (bytes.rfind(kMatFileMagic, 0) == 0)
+    refuse(path, what, "it is a MATLAB file (written with --format mat); give the YAML file");
   return bytes;
 }
 
