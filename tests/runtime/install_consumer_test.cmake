@@ -39,3 +39,17 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
     -DCONSUMER_EXPECT_YAML=${EXPECT_YAML} -DCONSUMER_EXPECTED_PREFIX=${prefix})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+
+# docs/runtime.md's example application against the same prefix, flying a gains file
+if(DEFINED EXAMPLE_SOURCE_DIR AND EXPECT_YAML)
+  run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE_DIR} -B ${WORK_DIR}/example
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
+      -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  run(${CMAKE_COMMAND} --build ${WORK_DIR}/example)
+  execute_process(COMMAND ${WORK_DIR}/example/fly_gains ${EXAMPLE_GAINS} 100 RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "n = 6, gamma = 0\\.3587237128899835[0-9]*, z_F\\(99\\) = [-+0-9.e]+ [-+0-9.e]+ [-+0-9.e]+ [-+0-9.e]+ [-+0-9.e]+ [-+0-9.e]+")
+    message(FATAL_ERROR "fly_gains ${EXAMPLE_GAINS}: exit ${rc}\n${out}\n${err}")
+  endif()
+  message(STATUS "${out}")
+endif()
