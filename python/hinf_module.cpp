@@ -7,7 +7,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -135,6 +138,61 @@ auto without_gil(Job&& job) {
   return job();
 }
 
+// Ctrl-C during a long job. The solver polls `poll()` (sdp::Options::interrupted, through
+// synth's JobObservers) while the GIL is released; at most every kPollSeconds it takes the
+// GIL and runs Python's signal handlers (PyErr_CheckSignals, main thread only). The
+// exception a handler raised (KeyboardInterrupt for SIGINT) is kept, the solver told to
+// stop, and the exception raised again once the job has returned or thrown.
+class Interruption {
+ public:
+  std::function<bool()> poll() {
+    return [state = state_] {
+      if (state->raised) return true;
+      const auto now = std::chrono::steady_clock::now();
+      if (now - state->last < std::chrono::duration<double>(kPollSeconds)) return false;
+      state->last = now;
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() == 0) return false;
+      PyErr_Fetch(&state->type, &state->value, &state->traceback);
+      state->raised = true;
+      return true;
+    };
+  }
+  // Raises the kept exception (with the GIL held), if a handler raised one.
+  void raise_if_interrupted() {
+    if (!state_->raised) return;
+    PyErr_Restore(state_->type, state_->value, state_->traceback);
+    state_->type = state_->value = state_->traceback = nullptr;
+    throw py::error_already_set();
+  }
+  // Runs `job` without the GIL, interruptible through poll(): its result, or the kept
+  // exception raised in place of the job's own (which only says "interrupted").
+  template <class Job>
+  auto run(Job&& job) {
+    try {
+      auto result = without_gil(std::forward<Job>(job));
+      raise_if_interrupted();
+      return result;
+    } catch (const py::error_already_set&) {
+      throw;
+    } catch (...) {
+      raise_if_interrupted();
+      throw;
+    }
+  }
+
+ private:
+  static constexpr double kPollSeconds = 0.05;  // a Ctrl-C is seen within this, plus one LMI term's work
+  struct State {
+    std::atomic<bool> raised{false};
+    std::chrono::steady_clock::time_point last{};
+    PyObject* type = nullptr;
+    PyObject* value = nullptr;
+    PyObject* traceback = nullptr;
+  };
+  std::shared_ptr<State> state_ = std::make_shared<State>();
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_hinf, m) {
@@ -163,7 +221,9 @@ PYBIND11_MODULE(_hinf, m) {
              obs.on_iteration = [&log](const hinf::synth::IterationReport& r) {
                if (!r.progress.newton_step && !r.progress.assembling) log.push_back(r);
              };
-             const auto outcome = without_gil([&] { return p.solve(obs); });
+             Interruption interruption;
+             obs.interrupted = interruption.poll();
+             const auto outcome = interruption.run([&] { return p.solve(obs); });
              py::dict d = solve_dict(outcome);
              py::list iterations;
              for (const auto& r : log) {
@@ -196,7 +256,10 @@ PYBIND11_MODULE(_hinf, m) {
            })
       .def("check",
            [](const Problem& p, const std::string& golden, double rtol) {
-             const auto o = without_gil([&] { return p.check(golden, rtol); });
+             Interruption interruption;
+             hinf::synth::JobObservers obs;
+             obs.interrupted = interruption.poll();
+             const auto o = interruption.run([&] { return p.check(golden, rtol, obs); });
              return py::make_tuple(o.same, o.gamma_now, o.report);
            })
       .def("export_sdpa", [](const Problem& p) { return without_gil([&] { return p.export_sdpa(); }); })
@@ -270,9 +333,10 @@ PYBIND11_MODULE(_hinf, m) {
       [](std::optional<std::string> text, const std::string& path, const std::string& name,
          const std::vector<double>& values) {
         const std::string yaml = config_text(text, path);
-        const auto points = without_gil([&] {
+        Interruption interruption;
+        const auto points = interruption.run([&, poll = interruption.poll()] {
           const hinf::synth::SweepParameter parameter = hinf::synth::resolve_sweep_parameter(name, yaml, path);
-          return hinf::synth::sweep(parameter, values, yaml, path);
+          return hinf::synth::sweep(parameter, values, yaml, path, poll);
         });
         return sweep_points(points);
       },
@@ -284,9 +348,10 @@ PYBIND11_MODULE(_hinf, m) {
       [](std::optional<std::string> text, const std::string& path, const std::string& name, double lo, double hi,
          double tolerance) {
         const std::string yaml = config_text(text, path);
-        const hinf::synth::FeasibilitySearch s = without_gil([&] {
+        Interruption interruption;
+        const hinf::synth::FeasibilitySearch s = interruption.run([&, poll = interruption.poll()] {
           const hinf::synth::SweepParameter parameter = hinf::synth::resolve_sweep_parameter(name, yaml, path);
-          return hinf::synth::max_feasible(parameter, lo, hi, tolerance, yaml, path);
+          return hinf::synth::max_feasible(parameter, lo, hi, tolerance, yaml, path, poll);
         });
         py::dict d;
         d["largest_certified"] = sweep_point_dict(s.largest_certified);

@@ -25,6 +25,7 @@ struct CenteringOptions {
   double lambda2_accept = 0.0625; // ... or when λ² has stalled at or below this (λ ≤ 0.25)
   int max_iterations = 60;
   double max_seconds = 600;      // wall-clock budget of this centring (checked every iteration)
+  std::function<bool()> interrupted;  // checked with it: true ends the centring (Options::interrupted)
   int stall_iterations = 4;       // λ² not halved for this many iterations: stalled
   int give_up_iterations = 8;     // ... for this many near the centre: the centring failed
   bool phase1_stop_negative = false;  // phase I: stop as soon as s < 0 at an iterate

@@ -56,8 +56,8 @@ CenteringResult damped_newton_centre(LogDetBarrier& barrier, const Eigen::Vector
       return r;
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (k >= opt.max_iterations || elapsed > opt.max_seconds) {
-      r.status = k >= opt.max_iterations ? "iteration limit" : "time limit";
+    if (k >= opt.max_iterations || elapsed > opt.max_seconds || (opt.interrupted && opt.interrupted())) {
+      r.status = k >= opt.max_iterations ? "iteration limit" : elapsed > opt.max_seconds ? "time limit" : "interrupted";
       return r;
     }
     // Step: backtracking from the full Newton step (Armijo, slope −λ²) down to the damped

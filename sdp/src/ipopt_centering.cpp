@@ -110,7 +110,8 @@ class CenteringTnlp : public Ipopt::TNLP {
                              Number, Number, Number, Number alpha_pr, Index, const Ipopt::IpoptData*,
                              Ipopt::IpoptCalculatedQuantities*) override {
     iterations_ = iter;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > opt_.max_seconds) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > opt_.max_seconds ||
+        (opt_.interrupted && opt_.interrupted())) {
       time_limited_ = true;
       return false;
     }

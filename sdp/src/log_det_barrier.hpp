@@ -23,11 +23,17 @@ class LogDetBarrier {
   bool phase1() const { return phase1_; }
   void set_t(double t) { t_ = t; }
   double t() const { return t_; }
-  // After this instant every Hessian assembly stops early and the functions that need
-  // one return false (a large LMI's Hessian takes seconds: the solver's time limit is
-  // kept within one term's work, not one Newton iteration's).
-  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
-  bool past_deadline() const { return std::chrono::steady_clock::now() > deadline_; }
+  // After this instant, or once `interrupted` returns true, every Hessian assembly stops
+  // early and the functions that need one return false (a large LMI's Hessian takes
+  // seconds: the solver's time limit is kept within one term's work, not one Newton
+  // iteration's).
+  void set_deadline(std::chrono::steady_clock::time_point deadline, std::function<bool()> interrupted = nullptr) {
+    deadline_ = deadline;
+    interrupted_ = std::move(interrupted);
+  }
+  bool past_deadline() const {
+    return std::chrono::steady_clock::now() > deadline_ || (interrupted_ && interrupted_());
+  }
   // Called once per LMI term of every Hessian assembly (progress of a long one), if set.
   void set_heartbeat(std::function<void()> heartbeat) { heartbeat_ = std::move(heartbeat); }
   // The Hessian assembly's per-term check: the heartbeat, then the deadline.
@@ -83,6 +89,7 @@ class LogDetBarrier {
   double t_ = 1.0;
   std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
   std::function<void()> heartbeat_;
+  std::function<bool()> interrupted_;
 
   // cache keyed by z
   Eigen::VectorXd z_factored_, z_derivs_;

@@ -161,6 +161,11 @@ bool PathFollower::out_of_budget() {
     sol_.detail = "iteration limit (" + std::to_string(opt_.max_iterations) + ") reached";
     return true;
   }
+  if (opt_.interrupted && opt_.interrupted()) {
+    sol_.status = Status::Interrupted;
+    sol_.detail = "interrupted by the caller";
+    return true;
+  }
   if (remaining() <= 0) {
     sol_.status = Status::TimeLimit;
     sol_.detail = "time limit (" + std::to_string(opt_.time_limit_s) + " s) reached";
@@ -229,6 +234,7 @@ CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase p
       last_relative_gap(b) <= kShortBudgetWithin * opt_.relative_gap_tol)
     co.max_iterations = std::min(co.max_iterations, co.give_up_iterations);
   co.max_seconds = remaining();
+  co.interrupted = opt_.interrupted;
   co.phase1_stop_negative = (phase == Phase::FindFeasible);
   co.stop_on_inexact_newton = (phase == Phase::Minimise);
   return co;
@@ -450,7 +456,7 @@ bool PathFollower::find_feasible_in_ball(VectorXd& x, double lmax, double r1) {
     phase1_weight_ = eta;
     sol_.phase1_path.clear();
     LogDetBarrier b1(lmi_, c_, opt_.lmi_margin, r1, true, eta);
-    b1.set_deadline(deadline());
+    b1.set_deadline(deadline(), opt_.interrupted);
     b1.set_heartbeat(heartbeat(Phase::FindFeasible));
     z.head(n_) = x;
     z(n_) = lmax + 1.0;
@@ -474,7 +480,7 @@ Solution PathFollower::solve(const VectorXd& x0) {
     return sol_;
   }
   LogDetBarrier b2(lmi_, c_, opt_.lmi_margin, opt_.feasibility_radius, false);
-  b2.set_deadline(deadline());
+  b2.set_deadline(deadline(), opt_.interrupted);
   b2.set_heartbeat(heartbeat(Phase::Minimise));
   const bool ok = follow(b2, x, Phase::Minimise);
   sol_.x = x;

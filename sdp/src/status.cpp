@@ -10,6 +10,7 @@ const char* status_message(Status status) {
     case Status::Infeasible: return "infeasible: phase I ended with a positive minimal violation";
     case Status::MaxIterations: return "iteration limit reached";
     case Status::TimeLimit: return "time limit reached";
+    case Status::Interrupted: return "interrupted";
     case Status::NumericalError: return "numerical error: the barrier could not be centred";
     case Status::OutOfMemory: return "out of memory: the Newton engine (Ipopt/MUMPS) could not allocate its workspace";
     case Status::NotRun: return "not run";

@@ -35,6 +35,12 @@ class ConfiguredProblem : public Problem {
   bool verbose() const final { return cfg_.settings.verbose; }
 
  protected:
+  // The config's settings with the caller's interruption poll handed to the solver.
+  Settings settings_for(const JobObservers& observers) const {
+    Settings s = cfg_.settings;
+    s.solver.interrupted = observers.interrupted;
+    return s;
+  }
   const Config cfg_;
 
  private:

@@ -3,6 +3,7 @@
 #include "hinf/synth/sweep.hpp"
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 
 #include "hinf/common/number_text.hpp"
@@ -17,12 +18,13 @@ constexpr const char* kDeltaBar = "delta_bar";
 
 // `solve` at one value: its outcome, never thrown.
 SweepPoint solve_at(const SweepParameter& parameter, double value, const std::string& yaml_text,
-                    const std::string& source_name) {
+                    const std::string& source_name, const std::function<bool()>& interrupted) {
   SweepPoint point;
   point.value = value;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const SynthConfig cfg = config_at(parameter, value, yaml_text, source_name);
+    SynthConfig cfg = config_at(parameter, value, yaml_text, source_name);
+    cfg.settings.solver.interrupted = interrupted;
     const SynthesisResult r = synthesize(cfg.plant, cfg.settings);
     point.gamma = r.gamma;
     point.form = to_string(r.filter.form);
@@ -69,11 +71,12 @@ SynthConfig config_at(const SweepParameter& parameter, double value, const std::
 }
 
 std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector<double>& values,
-                              const std::string& yaml_text, const std::string& source_name) {
+                              const std::string& yaml_text, const std::string& source_name,
+                              const std::function<bool()>& interrupted) {
   for (double v : values) config_at(parameter, v, yaml_text, source_name);  // every value valid before any solve
   std::vector<SweepPoint> points;
   points.reserve(values.size());
-  for (double v : values) points.push_back(solve_at(parameter, v, yaml_text, source_name));
+  for (double v : values) points.push_back(solve_at(parameter, v, yaml_text, source_name, interrupted));
   return points;
 }
 
@@ -123,14 +126,15 @@ std::vector<double> parse_sweep_range(const std::string& text, const std::string
 }
 
 FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, double hi, double tolerance,
-                               const std::string& yaml_text, const std::string& source_name) {
+                               const std::string& yaml_text, const std::string& source_name,
+                               const std::function<bool()>& interrupted) {
   if (!(tolerance > 0) || !std::isfinite(tolerance))
     throw Error(ErrorCode::InvalidInput, "--tolerance = " + number_text(tolerance) + ": must be > 0", "tolerance");
   if (!(lo < hi)) throw Error(ErrorCode::InvalidInput, "--max-feasible: LO must be < HI", parameter.name);
   for (double v : {lo, hi}) config_at(parameter, v, yaml_text, source_name);  // both ends valid before any solve
   FeasibilitySearch s;
   const auto run = [&](double v) {
-    s.evaluated.push_back(solve_at(parameter, v, yaml_text, source_name));
+    s.evaluated.push_back(solve_at(parameter, v, yaml_text, source_name, interrupted));
     const SweepPoint& p = s.evaluated.back();
     if (p.outcome == ErrorCode::InvalidInput) throw Error(ErrorCode::InvalidInput, p.message, parameter.name);
     if (p.outcome == ErrorCode::Infeasible && (!s.smallest_infeasible || v < s.smallest_infeasible->value))

@@ -4,7 +4,10 @@ Run by CTest with PYTHONPATH=<build>/python, HINF_SYNTH and HINF_SIM the executa
 import json
 import os
 import re
+import signal
 import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
@@ -244,3 +247,23 @@ def test_sweep_and_compare_refuse_bad_input_naming_it(call, key):
     with pytest.raises(hinf.InvalidInput) as e:
         call()
     assert key in str(e.value)
+
+
+def test_ctrl_c_interrupts_a_solve_from_inside_the_call():
+    """SIGINT during hinf.synthesize raises KeyboardInterrupt out of the call itself (the
+    solver polls Python's signal handlers), not after the solve has run to its end."""
+    script = ("import signal, sys, traceback, hinf\n"
+              "signal.signal(signal.SIGINT, signal.default_int_handler)  # even if started with SIGINT ignored\n"
+              "print('started', flush=True)\n"
+              "try:\n"
+              "    hinf.synthesize(sys.argv[1])\n"
+              "    print('returned')\n"
+              "except KeyboardInterrupt:\n"
+              "    print('interrupted in', traceback.extract_tb(sys.exc_info()[2])[-1].filename)\n")
+    child = subprocess.Popen([sys.executable, "-c", script, path("tests", "data", "random-n16-seed1.yaml")],
+                             stdout=subprocess.PIPE, text=True)  # a solve of about 10 s on this machine
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(0.5)
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=600)
+    assert out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py")), out

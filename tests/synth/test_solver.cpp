@@ -131,3 +131,23 @@ TEST(Solver, NotRobustlyStableRefused) {
 }
 
 }  // namespace
+
+// The interruption hook (sdp::Options::interrupted, a front end's Ctrl-C): once it answers
+// true the synthesis ends with a numerical failure that says so, after at most a few more
+// polls; never polled true, it changes nothing.
+TEST(Solver, AnInterruptedSolveEndsSayingSo) {
+  const Plant P = random_uncertain_plant(3, 6);
+  Settings st;
+  int polls = 0;
+  st.solver.interrupted = [&polls] { return ++polls > 20; };
+  try {
+    hinf::synth::synthesize(P, st);
+    FAIL() << "an interrupted solve returned";
+  } catch (const hinf::Error& e) {
+    EXPECT_EQ(e.code(), hinf::ErrorCode::NumericalFailure);
+    EXPECT_NE(std::string(e.what()).find("interrupted"), std::string::npos) << e.what();
+  }
+  Settings never;
+  never.solver.interrupted = [] { return false; };
+  EXPECT_EQ(hinf::synth::synthesize(P, never).gamma, hinf::synth::synthesize(P, Settings()).gamma);
+}

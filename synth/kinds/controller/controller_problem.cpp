@@ -23,7 +23,8 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
   using ConfiguredProblem::ConfiguredProblem;
 
   SolveOutcome solve(const JobObservers& observers) const override {
-    ControllerSynthesisResult r = synthesize_controller(cfg_.plant, cfg_.settings, cfg_.design, observers.on_iteration);
+    ControllerSynthesisResult r =
+        synthesize_controller(cfg_.plant, settings_for(observers), cfg_.design, observers.on_iteration);
     std::string file = format_controller_yaml(r, cfg_.plant, cfg_.design, {cfg_.path, cfg_.sha256, period()});
     std::string json = job_json::solved("solve", "controller", cfg_.path, r.gamma, "controller", file);
     return {r.gamma, std::move(file), "controller", controller_report::solve(r, cfg_), std::move(json), std::move(r)};
@@ -50,7 +51,7 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     const Loaded in = load(golden_path);
     const double gamma = stated_gamma(in.file.gamma, golden_path + ": golden file has no 'gamma'");
     const ControllerSynthesisResult now =
-        synthesize_controller(cfg_.plant, cfg_.settings, cfg_.design, observers.on_iteration);
+        synthesize_controller(cfg_.plant, settings_for(observers), cfg_.design, observers.on_iteration);
     ControllerGoldenComparison cmp = compare_controller_with_golden(cfg_, in.controller, gamma, now, rtol);
     return {cmp.same(), now.gamma,
             controller_report::check(gamma, in.file.config_sha256, cfg_.sha256, now.gamma, cmp, rtol),

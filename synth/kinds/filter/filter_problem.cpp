@@ -19,7 +19,7 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
 
   SolveOutcome solve(const JobObservers& observers) const override {
     if (observers.on_log) filter_report::log_before_solve(cfg_.plant, cfg_.settings, observers.on_log);
-    SynthesisResult r = synthesize(cfg_.plant, cfg_.settings, observers.on_iteration);
+    SynthesisResult r = synthesize(cfg_.plant, settings_for(observers), observers.on_iteration);
     if (observers.on_log) filter_report::log_after_solve(r.solver, observers.on_log);
     return outcome("solve", filter_report::solve(r), std::move(r));
   }
@@ -42,7 +42,7 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
   CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers) const override {
     const Loaded in = load(golden_path);
     const double gamma = stated_gamma(in.gains.gamma, golden_path + ": golden file has no 'gamma'");
-    const SynthesisResult now = synthesize(cfg_.plant, cfg_.settings, observers.on_iteration);
+    const SynthesisResult now = synthesize(cfg_.plant, settings_for(observers), observers.on_iteration);
     GoldenComparison cmp = compare_with_golden(cfg_, in.filter, gamma, now, rtol);
     return {cmp.same(), now.gamma, filter_report::check(in.gains, cfg_.sha256, now.gamma, cmp, rtol),
             filter_report::check_json(cfg_.path, golden_path, in.gains, in.filter, cfg_.sha256, now.gamma, cmp, rtol),

@@ -25,6 +25,10 @@ struct Options {
   int max_newton_per_centering = 60;     // Newton iterations allowed in one centring
   int max_iterations = 600;              // Newton iterations allowed in one solve (I + II)
   double time_limit_s = 600.0;           // wall-clock limit of one solve
+  // Polled with the time limit (before every Newton iteration and during every Hessian
+  // assembly, once per LMI term): returning true ends the solve as soon as it can, with
+  // Status::Interrupted (a front end's Ctrl-C). Empty: never. Not a config key.
+  std::function<bool()> interrupted;
 };
 
 // One centring of the path, for an iteration table.

@@ -12,6 +12,7 @@ enum class Status {
                    // estimate; a theorem only once verified_infeasibility, dual_bound.hpp, verifies it)
   MaxIterations,   // Newton-iteration limit hit
   TimeLimit,       // wall-clock limit hit
+  Interrupted,     // the caller asked to stop (Options::interrupted)
   NumericalError,  // the barrier could not be centred (round-off, engine failure)
   OutOfMemory,     // the Newton engine (Ipopt/MUMPS) could not get the memory it needs
   NotRun

@@ -21,13 +21,17 @@
 
 namespace hinf::synth {
 
-// What a caller hears while a job runs; both may be empty (the default: nothing).
+// What a caller hears while a job runs, and how it stops one; each may be empty (the
+// default: nothing).
 struct JobObservers {
   // Every solver iteration (solve and check), for an iteration table.
   IterationObserver on_iteration;
   // The lines of the verbose account of a solve (coefficient ranges, problem size and time
   // estimate, the scaling applied, the optimality gap), one line per call, no newline.
   std::function<void(const std::string&)> on_log;
+  // Polled by the solver (sdp::Options::interrupted, within one LMI term's work): true ends
+  // the job soon with Error(NumericalFailure) "… interrupted" (a front end's Ctrl-C).
+  std::function<bool()> interrupted;
 };
 
 // `solve`: the certified design.

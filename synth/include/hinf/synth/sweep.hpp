@@ -6,6 +6,7 @@
 // certificate — so a point's γ is certified exactly as `solve`'s is, and its outcome is the
 // exit code `solve` would give there.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,8 +49,11 @@ const char* sweep_outcome_word(ErrorCode outcome);
 
 // `synthesize` at each value, in order. A point's failure to solve is recorded, never
 // thrown; a value that makes the config invalid is Error InvalidInput before any solve.
+// `interrupted`: the solver's poll (sdp::Options::interrupted); once true, every point left
+// ends at once as a numerical failure "… interrupted".
 std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector<double>& values,
-                              const std::string& yaml_text, const std::string& source_name);
+                              const std::string& yaml_text, const std::string& source_name,
+                              const std::function<bool()>& interrupted = nullptr);
 
 // lo:step:hi as the user writes it (step > 0, lo ≤ hi; hi included to a rounding of step);
 // Error InvalidInput naming `option` otherwise. At most kMaxSweepPoints values.
@@ -71,6 +75,7 @@ struct FeasibilitySearch {
   std::vector<SweepPoint> evaluated;                 // every solve, in the order run
 };
 FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, double hi, double tolerance,
-                               const std::string& yaml_text, const std::string& source_name);
+                               const std::string& yaml_text, const std::string& source_name,
+                               const std::function<bool()>& interrupted = nullptr);
 
 }  // namespace hinf::synth
