@@ -395,7 +395,9 @@ PYBIND11_MODULE(_hinf, m) {
         request.seed = seed;
         request.jobs = jobs;
         request.duration = duration;
-        const hinf::sim::CampaignResult result = without_gil([&] { return hinf::sim::simulate(request); });
+        Interruption interruption;
+        request.interrupted = interruption.poll();
+        const hinf::sim::CampaignResult result = interruption.run([&] { return hinf::sim::simulate(request); });
         py::dict files;
         for (const auto& [name, bytes] : result.files) files[py::str(name)] = py::bytes(bytes);
         return files;

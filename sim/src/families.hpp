@@ -16,11 +16,11 @@ const Family& gyroless_attitude();   // sim/families/gyroless_attitude
 const Family& manoeuvring_target();  // sim/families/manoeuvring_target
 
 // The Monte-Carlo runs of a family (run_family_campaign) with the request's runs, jobs, seed
-// and progress: stats[run][filter], run 0's samples into *samples when given.
+// progress and interruption: stats[run][filter], run 0's samples into *samples when given.
 template <class Stats, class Sample, class RunOne>
 std::vector<std::vector<Stats>> campaign(const CampaignRequest& r, std::vector<std::vector<Sample>>* samples,
                                          const RunOne& run_one) {
-  return run_family_campaign<Stats, Sample>(r.runs, r.jobs, r.seed, samples, run_one, r.progress);
+  return run_family_campaign<Stats, Sample>(r.runs, r.jobs, r.seed, samples, run_one, r.progress, r.interrupted);
 }
 
 }  // namespace hinf::sim::families

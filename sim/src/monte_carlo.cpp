@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "hinf/sim/rng.hpp"
+#include "hinf/sim/simulation_error.hpp"
 
 namespace hinf::sim {
 
@@ -21,24 +22,34 @@ std::vector<std::uint64_t> run_seeds(std::uint64_t seed, long runs) {
 }
 
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
-                                       const ProgressCallback& progress) {
+                                       const ProgressCallback& progress, const std::function<bool()>& interrupted) {
   std::vector<RunResult> results(static_cast<std::size_t>(runs));
   for_each_run(
       runs, jobs,
       [&](long i) { results[static_cast<std::size_t>(i)] = simulate_run(setup, run_seed(seed, i), i == 0); },
-      progress);
+      progress, interrupted);
   return results;
 }
 
-void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress) {
+void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress,
+                  const std::function<bool()>& interrupted) {
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
   std::atomic<long> next{0};
   std::atomic<bool> failed{false};
+  std::atomic<bool> stopped{false};
+  std::mutex poll_mutex;  // the poll is called from one thread at a time
+  const auto stop_requested = [&] {
+    if (!interrupted) return false;
+    std::lock_guard<std::mutex> lock(poll_mutex);
+    if (!stopped.load() && interrupted()) stopped.store(true);
+    return stopped.load();
+  };
   std::mutex progress_mutex;
   long done = 0;
 
   auto worker = [&]() {
     for (;;) {
+      if (stop_requested()) return;
       const long i = next.fetch_add(1);
       if (i >= runs || failed.load()) return;
       try {
@@ -69,6 +80,8 @@ void for_each_run(long runs, int jobs, const std::function<void(long)>& run, con
   for (auto& t : threads) t.join();
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
+  if (stopped.load()) throw SimulationError("interrupted: " + std::to_string(done) + " of " + std::to_string(runs) +
+                                            " runs done");
 }
 
 }  // namespace hinf::sim

@@ -267,3 +267,23 @@ def test_ctrl_c_interrupts_a_solve_from_inside_the_call():
     child.send_signal(signal.SIGINT)
     out, _ = child.communicate(timeout=600)
     assert out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py")), out
+
+
+def test_ctrl_c_interrupts_a_campaign_between_its_runs():
+    """SIGINT during hinf.simulate: no further Monte-Carlo run starts and KeyboardInterrupt is
+    raised out of the call once the run under way has ended."""
+    script = ("import signal, sys, traceback, hinf\n"
+              "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
+              "print('started', flush=True)\n"
+              "try:\n"
+              "    hinf.simulate(sys.argv[1], runs=50, seed=1, jobs=1)\n"
+              "    print('returned')\n"
+              "except KeyboardInterrupt:\n"
+              "    print('interrupted in', traceback.extract_tb(sys.exc_info()[2])[-1].filename)\n")
+    child = subprocess.Popen([sys.executable, "-c", script, path("configs", "scenarios", "paper-control.yaml")],
+                             stdout=subprocess.PIPE, text=True)  # 50 runs of a few seconds each
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(0.5)
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=600)
+    assert out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py")), out

@@ -71,7 +71,7 @@ class Hill final : public Family {
     std::vector<NamedFile> gains_files;
     const RunSetup setup = load_hill(r, context, gains_files);
     const auto results =
-        std::make_shared<const std::vector<RunResult>>(run_monte_carlo(setup, r.runs, r.seed, r.jobs, r.progress));
+        std::make_shared<const std::vector<RunResult>>(run_monte_carlo(setup, r.runs, r.seed, r.jobs, r.progress, r.interrupted));
     CampaignResult out;
     out.files = {{"trajectory.csv", format_trajectory_csv(*results->front().trajectory)}};
     out.files.insert(out.files.end(), gains_files.begin(), gains_files.end());

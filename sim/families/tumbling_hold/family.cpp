@@ -57,7 +57,7 @@ class TumblingHold final : public Family {
     for_each_run(
         r.runs, r.jobs,
         [&](long i) { (*results)[static_cast<std::size_t>(i)] = simulate_hold_run(setup, run_seed(r.seed, i), i == 0); },
-        r.progress);
+        r.progress, r.interrupted);
     const HoldTrajectory& tr = *results->front().trajectory;
     const ControllerSource& k = setup.scenario.controller;
     CampaignResult out;

@@ -27,6 +27,9 @@ struct CampaignRequest {
   std::optional<double> duration;   // overrides the scenario's (one rule: sim/scenario.hpp)
   StatusLog log;                    // status lines ("synthesising from PATH ..."), or none
   std::function<void(long done, long total)> progress;  // Monte-Carlo progress, or none
+  // Polled before each Monte-Carlo run; true: no further run starts, and simulate() throws
+  // SimulationError "interrupted" once the runs under way have ended (a front end's Ctrl-C).
+  std::function<bool()> interrupted;
 };
 
 // A campaign's run directory, in memory.

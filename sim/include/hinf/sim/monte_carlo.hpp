@@ -20,11 +20,15 @@ using ProgressCallback = std::function<void(long, long)>;
 // exception of the lowest-index failed run is rethrown after all threads have stopped.
 // The pool itself: run(i) for every i in [0, runs), on at most `jobs` threads (the same
 // contract: the lowest-index exception is rethrown after every thread has stopped). run(i)
-// must write only to its own result slot.
-void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress);
+// must write only to its own result slot. `interrupted` (may be empty) is polled before
+// each run: once true, no run starts and SimulationError "interrupted" is thrown when the
+// runs under way have ended (a front end's Ctrl-C).
+void for_each_run(long runs, int jobs, const std::function<void(long)>& run, const ProgressCallback& progress,
+                  const std::function<bool()>& interrupted = nullptr);
 
 std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::uint64_t seed, int jobs,
-                                       const ProgressCallback& progress);
+                                       const ProgressCallback& progress,
+                                       const std::function<bool()>& interrupted = nullptr);
 
 // The seeds of runs 0 … runs − 1, in order: run_seed(seed, i).
 std::vector<std::uint64_t> run_seeds(std::uint64_t seed, long runs);
@@ -35,7 +39,8 @@ std::vector<std::uint64_t> run_seeds(std::uint64_t seed, long runs);
 template <class Stats, class Sample, class RunOne>
 std::vector<std::vector<Stats>> run_family_campaign(long runs, int jobs, std::uint64_t seed,
                                                     std::vector<std::vector<Sample>>* samples, const RunOne& run_one,
-                                                    const ProgressCallback& progress) {
+                                                    const ProgressCallback& progress,
+                                                    const std::function<bool()>& interrupted = nullptr) {
   std::vector<std::vector<Stats>> stats(static_cast<std::size_t>(runs));
   for_each_run(
       runs, jobs,
@@ -45,7 +50,7 @@ std::vector<std::vector<Stats>> run_family_campaign(long runs, int jobs, std::ui
           on_sample = [samples](int f, const Sample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
         stats[static_cast<std::size_t>(i)] = run_one(run_seed(seed, i), on_sample);
       },
-      progress);
+      progress, interrupted);
   return stats;
 }
 
