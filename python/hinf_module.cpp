@@ -19,6 +19,8 @@
 #include "hinf/codegen/codegen.hpp"
 #include "hinf/common/error.hpp"
 #include "hinf/common/input_file.hpp"
+#include "hinf/models/linear.hpp"
+#include "hinf/runtime/ekf.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
@@ -111,6 +113,47 @@ std::string config_text(const std::optional<std::string>& text, const std::strin
 }
 
 using hinf::runtime::LtiFilter;
+
+// The runtime's EKF on the linear model x(k+1) = F x + G u, y = H x (docs/maths.md §12),
+// its sizes taken from the matrices (Eigen::Dynamic): the same predict/update code as flies.
+using LinearModel = hinf::models::LinearModel<Eigen::Dynamic, Eigen::Dynamic>;
+using LinearMeasurement = hinf::models::LinearMeasurement<Eigen::Dynamic, Eigen::Dynamic>;
+using LinearEkf = hinf::runtime::Ekf<LinearModel, LinearMeasurement>;
+
+// A runtime filter's refusal (std::invalid_argument) as the library's InvalidInput.
+template <class Call>
+auto refused_as_invalid_input(Call&& call) {
+  try {
+    return call();
+  } catch (const std::invalid_argument& e) {
+    throw hinf::Error(hinf::ErrorCode::InvalidInput, e.what());
+  }
+}
+
+void require_length(const Eigen::VectorXd& v, Eigen::Index n, const char* what) {
+  if (v.size() != n)
+    throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                      std::string(what) + " must have " + std::to_string(n) + " entries; got " + std::to_string(v.size()),
+                      what);
+}
+
+LinearEkf make_linear_ekf(const Eigen::MatrixXd& F, const Eigen::MatrixXd& G, const Eigen::MatrixXd& H,
+                          const Eigen::MatrixXd& Q, const Eigen::MatrixXd& R) {
+  const Eigen::Index n = F.rows();
+  const auto shape = [](const Eigen::MatrixXd& M, Eigen::Index rows, Eigen::Index cols, const char* name) {
+    if (M.rows() != rows || M.cols() != cols || rows == 0 || cols == 0)
+      throw hinf::Error(hinf::ErrorCode::InvalidInput,
+                        std::string(name) + " must be " + std::to_string(rows) + "x" + std::to_string(cols) +
+                            " (nonempty); got " + std::to_string(M.rows()) + "x" + std::to_string(M.cols()),
+                        name);
+  };
+  shape(F, n, n, "F");
+  shape(G, n, G.cols(), "G");
+  shape(H, H.rows(), n, "H");
+  shape(Q, n, n, "Q");
+  shape(R, H.rows(), H.rows(), "R");
+  return refused_as_invalid_input([&] { return LinearEkf(LinearModel(F, G), LinearMeasurement(H), Q, R); });
+}
 
 // The filter driven over a whole record (rows are samples: Y is N×m, U N×r), z_F(k) as the
 // rows of the result — the loop in C++, without the GIL.
@@ -291,6 +334,32 @@ PYBIND11_MODULE(_hinf, m) {
       .def("step", [](LtiFilter& f, const Eigen::VectorXd& y, const Eigen::VectorXd& u) { return Eigen::VectorXd(f.step(y, u)); },
            py::arg("y"), py::arg("u"))
       .def("run", &run_filter, py::arg("Y"), py::arg("U") = py::none());
+
+  py::class_<LinearEkf>(m, "LinearEkf")
+      .def(py::init(&make_linear_ekf), py::arg("F"), py::arg("G"), py::arg("H"), py::arg("Q"), py::arg("R"))
+      .def("init",
+           [](LinearEkf& f, const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {
+             refused_as_invalid_input([&] { f.init(x0, P0); return 0; });
+           },
+           py::arg("x0"), py::arg("P0"))
+      .def("predict",
+           [](LinearEkf& f, const Eigen::VectorXd& u) {
+             require_length(u, f.model().G().cols(), "u");
+             return std::string(hinf::runtime::to_string(f.predict(u)));
+           },
+           py::arg("u"))
+      .def("update",
+           [](LinearEkf& f, const Eigen::VectorXd& y) {
+             require_length(y, f.R().rows(), "y");
+             return std::string(hinf::runtime::to_string(f.update(y)));
+           },
+           py::arg("y"))
+      .def("set_innovation_gate", &LinearEkf::set_innovation_gate, py::arg("nis_threshold"))
+      .def_property_readonly("x", [](const LinearEkf& f) { return Eigen::VectorXd(f.x()); })
+      .def_property_readonly("P", [](const LinearEkf& f) { return Eigen::MatrixXd(f.P()); })
+      .def_property_readonly("K", [](const LinearEkf& f) { return Eigen::MatrixXd(f.K()); })
+      .def_property_readonly("innovation", [](const LinearEkf& f) { return Eigen::VectorXd(f.innovation()); })
+      .def_property_readonly("nis", &LinearEkf::nis);
 
   // `hinf-synth codegen`: the four C99 files of a gains or controller file (its text, or read
   // from `path` as the executable reads it when `text` is None), in memory ({name: text});

@@ -24,7 +24,7 @@ import yaml
 from . import _hinf
 
 __all__ = ["synthesize", "kalman", "analyze", "verify", "check", "export_sdpa", "codegen", "sweep", "max_feasible",
-           "compare", "simulate", "lti_filter",
+           "compare", "simulate", "lti_filter", "ekf", "Ekf",
            "Error", "CheckFailed",
            "InvalidInput", "Infeasible", "NumericalFailure", "SynthesisResult", "Campaign"]
 
@@ -267,3 +267,48 @@ def lti_filter(gains):
     if isinstance(gains, os.PathLike) or (isinstance(gains, str) and "\n" not in gains):
         return _call(_hinf.LtiFilter.from_file, os.fspath(gains))
     return _call(_hinf.LtiFilter.from_text, gains, "<text>")
+
+
+class Ekf:
+    """The runtime's extended Kalman filter (runtime/ekf.hpp, docs/maths.md §12) on the linear
+    model x(k+1) = F x(k) + G u(k) + w, y(k) = H x(k) + v, cov(w) = Q, cov(v) = R: the same
+    predict/update code as flies (Joseph update, Cholesky solves). `predict(u)` and `update(y)`
+    return the step's status ("ok", or why it was skipped: the state is then unchanged); `x`,
+    `P`, `K` (the last update's gain), `innovation`, `nis`. Made by `hinf.ekf`."""
+
+    def __init__(self, native, n):
+        self._f = native
+        self.n = n
+
+    def init(self, x0, P0):
+        _call(self._f.init, np.asarray(x0, dtype=float).ravel(), np.atleast_2d(np.asarray(P0, dtype=float)))
+
+    def predict(self, u):
+        return _call(self._f.predict, np.asarray(u, dtype=float).ravel())
+
+    def update(self, y):
+        return _call(self._f.update, np.asarray(y, dtype=float).ravel())
+
+    def set_innovation_gate(self, nis_threshold):
+        """Skip updates whose normalised innovation squared exceeds this (default: none)."""
+        self._f.set_innovation_gate(float(nis_threshold))
+
+    x = property(lambda self: self._f.x)
+    P = property(lambda self: self._f.P)
+    K = property(lambda self: self._f.K)
+    innovation = property(lambda self: self._f.innovation)
+    nis = property(lambda self: self._f.nis)
+
+    def __repr__(self):
+        return f"<hinf.Ekf n={self.n}>"
+
+
+def ekf(F, G, H, Q, R, x0=None, P0=None):
+    """The runtime's EKF on the linear model (see `Ekf`), sizes from the matrices; x(0) = x0
+    (default 0) and P(0) = P0 (default I). Bad shapes, or a Q, R, P0 that is not positive
+    (semi)definite, raise InvalidInput naming the matrix."""
+    as_matrix = lambda M: np.atleast_2d(np.asarray(M, dtype=float))
+    f = Ekf(_call(_hinf.LinearEkf, as_matrix(F), as_matrix(G), as_matrix(H), as_matrix(Q), as_matrix(R)),
+            as_matrix(F).shape[0])
+    f.init(np.zeros(f.n) if x0 is None else x0, np.eye(f.n) if P0 is None else P0)
+    return f

@@ -1,4 +1,5 @@
-// Generic linear discrete-time model and measurement, fixed size:
+// Generic linear discrete-time model and measurement, fixed size (or Eigen::Dynamic, sized
+// by the matrices given: the Python module's EKF):
 //     x(k+1) = F x(k) + G u(k),     y(k) = H x(k)
 // They satisfy the process/measurement interfaces used by Ekf and Rekf (see ekf.hpp).
 #pragma once
@@ -9,7 +10,8 @@ namespace hinf::models {
 
 template <int NX_, int NU_>
 class LinearModel {
-  static_assert(NX_ > 0 && NU_ > 0, "LinearModel: dimensions must be positive");
+  static_assert((NX_ > 0 || NX_ == Eigen::Dynamic) && (NU_ > 0 || NU_ == Eigen::Dynamic),
+                "LinearModel: dimensions must be positive (or Eigen::Dynamic)");
 
  public:
   static constexpr int NX = NX_;
@@ -32,7 +34,8 @@ class LinearModel {
 
 template <int NX_, int NZ_>
 class LinearMeasurement {
-  static_assert(NX_ > 0 && NZ_ > 0, "LinearMeasurement: dimensions must be positive");
+  static_assert((NX_ > 0 || NX_ == Eigen::Dynamic) && (NZ_ > 0 || NZ_ == Eigen::Dynamic),
+                "LinearMeasurement: dimensions must be positive (or Eigen::Dynamic)");
 
  public:
   static constexpr int NX = NX_;

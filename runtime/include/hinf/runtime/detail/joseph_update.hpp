@@ -42,7 +42,7 @@ FilterStatus joseph_update(StateVector& x, Eigen::Matrix<double, NX, NX>& P,
   if (nis > nis_gate) return FilterStatus::InnovationRejected;
   K = llt.solve(HP).transpose();
   correct(x, K, nu);
-  Eigen::Matrix<double, NX, NX> IKH = Eigen::Matrix<double, NX, NX>::Identity();
+  Eigen::Matrix<double, NX, NX> IKH = Eigen::Matrix<double, NX, NX>::Identity(Pbar.rows(), Pbar.cols());
   IKH.noalias() -= K * H;
   const Eigen::Matrix<double, NX, NX> IKHP = IKH * Pbar;
   P.noalias() = IKHP * IKH.transpose();

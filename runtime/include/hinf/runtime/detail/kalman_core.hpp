@@ -61,7 +61,11 @@ class KalmanCore {
   static constexpr int NS = StateDimension<Model>::value;
   static constexpr int NU = Model::NU;
   static constexpr int NZ = Measurement::NZ;
-  static_assert(NX > 0 && NU > 0 && NZ > 0, "Kalman filter: dimensions must be positive");
+  // Eigen::Dynamic sizes (the linear model from Python) take their dimensions from Q and R.
+  static constexpr bool kDynamic = NX == Eigen::Dynamic;
+  static_assert((NX > 0 || kDynamic) && (NU > 0 || NU == Eigen::Dynamic) && (NZ > 0 || NZ == Eigen::Dynamic),
+                "Kalman filter: dimensions must be positive (or Eigen::Dynamic)");
+  static_assert(!kDynamic || NS == NX, "Kalman filter: a dynamic-size state has no manifold part");
   static_assert(Measurement::NX == Model::NX, "Kalman filter: model and measurement state dimensions differ");
   static_assert(NS == NX || HasBoxplus<Model, Eigen::Matrix<double, NS, 1>, Eigen::Matrix<double, NX, 1>>::value,
                 "Kalman filter: a model with NS != NX must provide boxplus(x, dx)");
@@ -77,6 +81,8 @@ class KalmanCore {
 
   // x(0) and P(0); P0 (symmetric PD, else std::invalid_argument) is also the reset value.
   void init(const State& x0, const StateCov& P0) {
+    require_size(x0.rows(), x0.cols(), "x0", x_.rows(), 1);
+    require_size(P0.rows(), P0.cols(), "P0", P_.rows(), P_.cols());
     if (!x0.allFinite()) throw std::invalid_argument(std::string(name_) + ": x0 has a non-finite entry");
     require_positive_definite(P0, name_, "P0");
     x_ = x0;
@@ -86,10 +92,12 @@ class KalmanCore {
 
   // Configuration.
   void set_Q(const StateCov& Q) {
+    if (Q_.size() > 0) require_size(Q.rows(), Q.cols(), "Q", Q_.rows(), Q_.cols());
     require_positive_semidefinite(Q, name_, "Q");
     Q_ = 0.5 * (Q + Q.transpose());
   }
   void set_R(const ObsCov& R) {
+    if (R_.size() > 0) require_size(R.rows(), R.cols(), "R", R_.rows(), R_.cols());
     require_positive_definite(R, name_, "R");
     R_ = 0.5 * (R + R.transpose());
   }
@@ -125,12 +133,23 @@ class KalmanCore {
       : model_(model), meas_(measurement), name_(name) {
     set_Q(Q);
     set_R(R);
-    x_.setZero();
-    P_.setIdentity();
-    P0_.setIdentity();
-    K_.setZero();
-    S_.setZero();
-    nu_.setZero();
+    const Eigen::Index nx = Q_.rows(), nz = R_.rows();
+    if constexpr (kDynamic) x_.setZero(nx);
+    else x_.setZero();
+    P_.setIdentity(nx, nx);
+    P0_.setIdentity(nx, nx);
+    K_.setZero(nx, nz);
+    S_.setZero(nz, nz);
+    nu_.setZero(nz);
+  }
+
+  // Dynamic sizes: a matrix given must have the filter's size (fixed sizes: the type says so).
+  void require_size(Eigen::Index rows, Eigen::Index cols, const char* what, Eigen::Index want_rows,
+                    Eigen::Index want_cols) const {
+    if (rows != want_rows || cols != want_cols)
+      throw std::invalid_argument(std::string(name_) + ": " + what + " must be " + std::to_string(want_rows) + "x" +
+                                  std::to_string(want_cols) + ", got " + std::to_string(rows) + "x" +
+                                  std::to_string(cols));
   }
 
   // f(x, u) and its Jacobian F; Ok, or why the step cannot be taken.
