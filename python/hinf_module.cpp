@@ -25,6 +25,7 @@
 #include "hinf/runtime_yaml/gains_file.hpp"
 #include "hinf/runtime_yaml/lti_filter_from_gains.hpp"
 #include "hinf/sim/family.hpp"
+#include "hinf/sim/plots.hpp"
 #include "hinf/synth/api.hpp"
 #include "hinf/synth/comparison.hpp"
 #include "hinf/synth/filter_file.hpp"
@@ -456,7 +457,8 @@ PYBIND11_MODULE(_hinf, m) {
   // directory's files as {name: bytes}.
   m.def(
       "simulate",
-      [](const std::string& path, long runs, std::uint64_t seed, int jobs, std::optional<double> duration) {
+      [](const std::string& path, long runs, std::uint64_t seed, int jobs, std::optional<double> duration,
+         std::optional<std::string> out, bool plots) {
         hinf::sim::CampaignRequest request;
         request.scenario_text = hinf::read_input_file(path, "scenario", hinf::kMaxScenarioBytes);
         request.scenario_path = path;
@@ -467,10 +469,19 @@ PYBIND11_MODULE(_hinf, m) {
         Interruption interruption;
         request.interrupted = interruption.poll();
         const hinf::sim::CampaignResult result = interruption.run([&] { return hinf::sim::simulate(request); });
+        if (out)  // the run directory as hinf-sim writes it: all or nothing, never over an input
+          without_gil([&] {
+            try {
+              hinf::sim::write_campaign(result, *out, path, plots);
+            } catch (const hinf::sim::PlotError& e) {  // gnuplot could not draw: as hinf-sim says it
+              throw hinf::Error(hinf::ErrorCode::InvalidInput, std::string("plots: ") + e.what());
+            }
+            return 0;
+          });
         py::dict files;
         for (const auto& [name, bytes] : result.files) files[py::str(name)] = py::bytes(bytes);
         return files;
       },
       py::arg("path"), py::arg("runs") = 1, py::arg("seed") = 1, py::arg("jobs") = 1,
-      py::arg("duration") = py::none());
+      py::arg("duration") = py::none(), py::arg("out") = py::none(), py::arg("plots") = false);
 }

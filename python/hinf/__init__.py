@@ -249,10 +249,12 @@ class Campaign:
         return f"<hinf.Campaign {sorted(self.files)}>"
 
 
-def simulate(scenario, runs=1, seed=1, jobs=1, duration=None):
-    """`hinf-sim SCENARIO --runs N --seed S --jobs J [--duration T]` in memory (nothing written;
-    no plots)."""
-    return Campaign(_call(_hinf.simulate, os.fspath(scenario), runs, seed, jobs, duration))
+def simulate(scenario, runs=1, seed=1, jobs=1, duration=None, out=None, plots=False):
+    """`hinf-sim SCENARIO --runs N --seed S --jobs J [--duration T]` in memory: nothing is written
+    unless `out` names a run directory, which is then written as hinf-sim writes it (all files
+    or none, never over a file the run reads; the PNGs too with plots=True)."""
+    return Campaign(_call(_hinf.simulate, os.fspath(scenario), runs, seed, jobs, duration,
+                          None if out is None else os.fspath(out), plots))
 
 
 def lti_filter(gains):

@@ -110,6 +110,11 @@ def test_simulate_gives_the_executables_run_directory(tmp_path):
     runs = c.table("runs.csv")
     assert len(runs) == 2
     assert c.summary
+    # asked to, it writes the same run directory
+    hinf.simulate(scenario, runs=2, seed=7, duration=300, out=tmp_path / "py")
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == on_disk
+    for name in on_disk:
+        assert timing_apart((tmp_path / "py" / name).read_text()) == timing_apart((out / name).read_text()), name
 
 
 def numpy_filter(m, Y, U=None):
