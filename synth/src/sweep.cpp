@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hinf/common/number_text.hpp"
+#include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "bisection.hpp"
 
@@ -42,6 +43,11 @@ SweepPoint solve_at(const SweepParameter& parameter, double value, const std::st
 
 SweepParameter resolve_sweep_parameter(const std::string& name, const std::string& yaml_text,
                                        const std::string& source_name) {
+  if (declares_controller(yaml_text))
+    throw Error(ErrorCode::InvalidInput,
+                source_name + " declares a controller (controller:); a sweep studies a filter config's certified "
+                              "gamma (system: or hill:)",
+                "controller");
   SweepParameter p{name, name};
   if (name == kUncertaintyScale) {
     p.key_path.clear();

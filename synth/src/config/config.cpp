@@ -70,8 +70,8 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
   const YAML::Node root =
       reader.load(yaml_text, "empty config; expected a map with 'system' or 'hill'");
   if (root.IsMap() && root["controller"])
-    reader.fail(root["controller"], "a controller config (controller:, docs/maths.md §26) is read by 'hinf-synth solve' only; "
-                            "this command takes a filter config (system: or hill:)");
+    reader.fail(root["controller"], "a controller config (controller:, docs/maths.md §26): this command takes a "
+                            "filter config (system: or hill:); solve, verify, analyze, check and export-sdpa take both");
   reader.check_map(root, "", {"system", "uncertainty", "hill", "solver", "filter", "constants", "parameters",
                               "uncertainty_blocks", "kalman"});
 
