@@ -50,7 +50,7 @@ const CLI::Validator kWholeNumber(
 
 void add_options(CLI::App& app, Options& o) {
   app.add_option("scenario", o.scenario_path, "scenario file (YAML)")->required();
-  app.add_option("--out,-o", o.out_dir, "output directory (created if missing)")->required();
+  app.add_option("-o,--output,--out", o.out_dir, "output directory (created if missing)")->required();
   app.add_option("--runs", o.runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
       ->check(CLI::Range(1L, 1000000L));
   app.add_option("--seed", o.seed, "base seed, a whole number in [0, 2^64 - 1]")->check(kWholeNumber);
@@ -103,11 +103,16 @@ int run(int argc, char** argv) {
                "published gains, EKFs and the REKF (docs/experiments.md)"};
   Options o;
   add_options(app, o);
+  app.set_version_flag("--version", "hinf-sim " HINF_VERSION);
+  app.footer("Example: hinf-sim configs/scenarios/paper-control.yaml -o out/paper --runs 20 --jobs 2\n"
+             "Exit codes: 0 ok, 2 invalid input or unwritable output, 3 infeasible synthesis, 4 numerical failure "
+             "(non-finite truth, synthesis certificate). Conventions: docs/cli.md.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : kExitInvalid;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "hinf-sim: error: " << e.what() << " (hinf-sim --help)\n";
+    return kExitInvalid;
   }
 
   const auto fail = [](const std::string& what, hinf::ErrorCode code) {

@@ -1,4 +1,4 @@
-// hinf-synth codegen GAINS.yaml --prefix NAME --out DIR [--real double|float] [--json]
+// hinf-synth codegen GAINS.yaml --prefix NAME -o DIR [--real double|float] [--json]
 // Writes DIR/NAME.h, DIR/NAME.c (the filter, C99), DIR/NAME_vectors.h and
 // DIR/NAME_check.c (test vectors and an on-target check driver). docs/codegen.md.
 #include <filesystem>
@@ -36,7 +36,8 @@ void add_codegen(CLI::App& app, Action& action) {
   cmd->add_option("--prefix", args->prefix,
                   "Symbol and file prefix, a C identifier (e.g. nav_filter)")
       ->required();
-  cmd->add_option("--out", args->out, "Output directory (created if missing)")->required();
+  cmd->add_option("-o,--output,--out", args->out, "Output directory (created if missing; --out: the old spelling)")
+      ->required();
   cmd->add_option("--real", args->real, "Arithmetic type of the generated code")
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
