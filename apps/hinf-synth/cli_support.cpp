@@ -27,6 +27,28 @@ std::shared_ptr<ConfigGainsArgs> add_config_gains_args(CLI::App& cmd, const std:
 
 std::string num(double v) { return hinf::significant_text(v, 10); }
 
+void write_output(const std::string& path, const std::string& bytes, const std::vector<std::string>& inputs) {
+  if (path == "-") {
+    std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    std::cout.flush();
+    if (!std::cout) throw Error(ErrorCode::InvalidInput, "cannot write to stdout");
+    return;
+  }
+  write_file_atomic(path, bytes, inputs);
+}
+
+std::ostream& report_stream(const std::string& output) { return output == "-" ? std::cerr : std::cout; }
+
+void require_one_use_of_stdout(const std::string& output, bool json) {
+  if (output == "-" && json)
+    throw Error(ErrorCode::InvalidInput, "-o - and --json both write to stdout: give -o a file, or drop --json",
+                "--json");
+}
+
+void add_quiet_flag(CLI::App& cmd, bool& quiet) {
+  cmd.add_flag("-q,--quiet", quiet, "no report on success (errors and --json are still printed)");
+}
+
 void add_format_option(CLI::App& cmd, std::string& format) {
   cmd.add_option("--format", format, "file format: yaml or mat (MATLAB; default: mat if the output ends in .mat)")
       ->check(CLI::IsMember({"yaml", "mat"}));

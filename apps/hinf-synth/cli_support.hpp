@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,16 @@ void add_format_option(CLI::App& cmd, std::string& format);
 // The bytes of that file: the YAML as it is, or a MAT-file of the same keys
 // (hinf/matfile/mat_file.hpp; docs/file-formats.md "MATLAB files").
 std::string file_bytes(const synth::SolveOutcome& r, const std::string& format, const std::string& output);
+// Output paths (docs/cli.md): "-" is stdout, which then carries the file's bytes alone (the
+// report goes to stderr). Otherwise the file is written atomically, never over `inputs`.
+void write_output(const std::string& path, const std::string& bytes, const std::vector<std::string>& inputs);
+// Where the text report goes: stdout, or stderr when `output` is "-".
+std::ostream& report_stream(const std::string& output);
+// -o - with --json: both want stdout; Error(InvalidInput) naming them.
+void require_one_use_of_stdout(const std::string& output, bool json);
+// -q/--quiet on a subcommand: no report on success (errors and --json are still printed).
+void add_quiet_flag(CLI::App& cmd, bool& quiet);
+
 using Json = nlohmann::ordered_json;  // keys in the order written
 // --json: one line of JSON on stdout (a path that is not UTF-8 with U+FFFD rather than refused).
 void print_json(const Json& j);

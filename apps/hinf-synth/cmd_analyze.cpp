@@ -12,8 +12,10 @@ void add_analyze(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("analyze", "nominal Hinf norm, robust bound, the worst case found over the uncertainty (and the delta grid of hill configs) of any filter; the closed loop of any controller");
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML");
   auto json = std::make_shared<bool>(false);
+  auto quiet = std::make_shared<bool>(false);
   auto points = std::make_shared<int>(41);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.analyze/1) instead of text");
+  add_quiet_flag(*cmd, *quiet);
   cmd->add_option("--delta-points", *points, "grid points over [-delta_bar, delta_bar] (hill configs)")
       ->check(CLI::Range(2, 100001));
   cmd->callback([=, &action] {
@@ -21,7 +23,7 @@ void add_analyze(CLI::App& app, Action& action) {
       const synth::AnalysisOutcome a = synth::load_problem(args->config)->analyze(args->gains, {*points});
       if (*json)
         print_json(a.json);
-      else
+      else if (!*quiet)
         std::cout << a.report;
       return 0;
     };

@@ -18,17 +18,19 @@ void add_check(CLI::App& app, Action& action) {
   auto golden = std::make_shared<std::string>();
   auto rtol = std::make_shared<double>(1e-6);
   auto json = std::make_shared<bool>(false);
+  auto quiet = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
   cmd->add_option("--golden", *golden, "golden gains or controller YAML")->required();
   cmd->add_option("--rtol", *rtol, "relative tolerance on gamma and on the designs' transfer-function difference")
       ->check(CLI::Range(1e-14, 1.0));
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.check/1) instead of text");
+  add_quiet_flag(*cmd, *quiet);
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::CheckOutcome c = synth::load_problem(*config)->check(*golden, *rtol);
       if (*json)
         print_json(c.json);
-      else
+      else if (!*quiet)
         std::cout << c.report;
       return c.same ? 0 : 1;
     };

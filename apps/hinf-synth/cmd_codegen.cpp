@@ -28,6 +28,7 @@ void add_codegen(CLI::App& app, Action& action) {
     int vector_steps = 50;
     std::optional<double> tustin;  // s; a continuous-time controller discretised at this period
     bool json = false;
+    bool quiet = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -48,6 +49,7 @@ void add_codegen(CLI::App& app, Action& action) {
   cmd->add_option("--tustin", args->tustin,
                   "Period (s) at which a continuous-time controller file is discretised by Tustin's rule "
                   "(docs/maths.md (161))");
+  add_quiet_flag(*cmd, args->quiet);
   cmd->add_flag("--json", args->json, "print JSON (schema hinf-synth.codegen/1: the files written) instead of text");
   cmd->callback([args, &action] {
     action = [args]() -> int {
@@ -65,7 +67,7 @@ void add_codegen(CLI::App& app, Action& action) {
       Json written = Json::array();
       for (const auto& f : files.files) {
         const std::string path = (std::filesystem::path(args->out) / f.name).lexically_normal().string();
-        if (!args->json) std::cout << "wrote " << path << "\n";
+        if (!args->json && !args->quiet) std::cout << "wrote " << path << "\n";
         written.push_back({{"path", path}, {"bytes", f.contents.size()}});
       }
       if (args->json) {

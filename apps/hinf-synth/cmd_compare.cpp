@@ -70,9 +70,9 @@ Json comparison_json(const std::string& config, const std::string& gains, const 
   return j;
 }
 
-void print_row(const std::string& name, const synth::FilterFigures& f) {
-  std::printf("%-28s %-24s %-24s %s\n", name.c_str(), num(f.hinf_norm_nominal).c_str(),
-              std::isnan(f.robust_bound) ? "-" : num(f.robust_bound).c_str(), num(f.h2_norm_nominal).c_str());
+void print_row(std::FILE* out, const std::string& name, const synth::FilterFigures& f) {
+  std::fprintf(out, "%-28s %-24s %-24s %s\n", name.c_str(), num(f.hinf_norm_nominal).c_str(),
+               std::isnan(f.robust_bound) ? "-" : num(f.robust_bound).c_str(), num(f.h2_norm_nominal).c_str());
 }
 
 }  // namespace
@@ -87,26 +87,31 @@ void add_compare(CLI::App& app, Action& action) {
   auto plot = std::make_shared<std::string>();
   auto points = std::make_shared<int>(400);
   auto json = std::make_shared<bool>(false);
-  cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman");
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman (- for stdout)");
+  add_quiet_flag(*cmd, *quiet);
   cmd->add_option("--plot", *plot, "PNG of both sigma curves (gnuplot)");
   cmd->add_option("--points", *points, "log-spaced frequencies (default 400; both peaks are added)")
       ->check(CLI::Range(2, synth::kMaxComparisonPoints));
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.compare/1: the figures and both sigma curves) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      require_one_use_of_stdout(*csv, *json);
       const synth::ConfigAndFilter in = synth::load_config_and_filter(args->config, args->gains);
       const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points,
                                                                  in.config.kalman_noise);
       const std::optional<double> T = in.config.sample_time();
       if (*json) {
         print_json(comparison_json(args->config, args->gains, c, T, in.filter.filtered()));
-      } else {
-        std::printf("%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
-        print_row(args->gains, c.filter);
-        print_row(kalman_name(in.filter.filtered()), c.kalman);
+      } else if (!*quiet) {
+        std::FILE* out = *csv == "-" ? stderr : stdout;  // the CSV alone on stdout with -o -
+        std::fprintf(out, "%-28s %-24s %-24s %s\n", "", "worst-case gain (nominal)", "robust bound", "RMS error (H2)");
+        print_row(out, args->gains, c.filter);
+        print_row(out, kalman_name(in.filter.filtered()), c.kalman);
+        std::fflush(out);
       }
       const std::string data = sigma_csv(c, T);
-      if (!csv->empty()) write_file_atomic(*csv, data, {args->config, args->gains});
+      if (!csv->empty()) write_output(*csv, data, {args->config, args->gains});
       if (!plot->empty())
         write_png_by_gnuplot(
             *plot, data,

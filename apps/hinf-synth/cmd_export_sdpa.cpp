@@ -14,14 +14,17 @@ void add_export_sdpa(CLI::App& app, Action& action) {
   auto config = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
+  auto quiet = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
-  cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write")->required();
+  cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write (- for stdout)")->required();
+  add_quiet_flag(*cmd, *quiet);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.export-sdpa/1: what was written) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      require_one_use_of_stdout(*output, *json);
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
       const std::string sdpa = problem->export_sdpa();
-      hinf::write_file_atomic(*output, sdpa, {*config});
+      write_output(*output, sdpa, {*config});
       if (*json) {
         Json j;
         j["schema"] = synth::json_schema("export-sdpa");
@@ -30,8 +33,8 @@ void add_export_sdpa(CLI::App& app, Action& action) {
         j["output"] = *output;
         j["bytes"] = sdpa.size();
         print_json(j);
-      } else {
-        std::cout << "SDPA problem written to " << *output << "\n";
+      } else if (!*quiet) {
+        report_stream(*output) << "SDPA problem written to " << (*output == "-" ? std::string("stdout") : *output) << "\n";
       }
       return 0;
     };

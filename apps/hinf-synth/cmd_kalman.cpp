@@ -17,18 +17,22 @@ void add_kalman(CLI::App& app, Action& action) {
   auto output = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML (system matrices or hill model)")->required();
-  cmd->add_option("-o,--output", *output, "gains YAML to write (atomically)")->required();
+  cmd->add_option("-o,--output", *output, "gains YAML to write (atomically; - for stdout)")->required();
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.kalman/1: gamma and the written file's contents) instead of text");
   auto format = std::make_shared<std::string>();
   add_format_option(*cmd, *format);
+  auto quiet = std::make_shared<bool>(false);
+  add_quiet_flag(*cmd, *quiet);
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      require_one_use_of_stdout(*output, *json);
       const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
-      hinf::write_file_atomic(*output, file_bytes(r, *format, *output), {*config});
+      write_output(*output, file_bytes(r, *format, *output), {*config});
       if (*json)
         print_json(r.json, {{"output", *output}});
-      else
-        std::cout << r.report << r.file_contents << " written to " << *output << "\n";
+      else if (!*quiet)
+        report_stream(*output) << r.report << r.file_contents << " written to "
+                               << (*output == "-" ? std::string("stdout") : *output) << "\n";
       return 0;
     };
   });

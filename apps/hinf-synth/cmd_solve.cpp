@@ -18,13 +18,16 @@ void add_solve(CLI::App& app, Action& action) {
   auto verbose = std::make_shared<bool>(false);
   auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML (system matrices, hill model, or controller)")->required();
-  cmd->add_option("-o,--output", *output, "gains or controller YAML to write (atomically)")->required();
+  cmd->add_option("-o,--output", *output, "gains or controller YAML to write (atomically; - for stdout)")->required();
   cmd->add_flag("-v,--verbose", *verbose, "coefficient ranges and the solver's iteration table on stderr");
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.solve/1: gamma and the written file's contents) instead of text");
   auto format = std::make_shared<std::string>();
   add_format_option(*cmd, *format);
+  auto quiet = std::make_shared<bool>(false);
+  add_quiet_flag(*cmd, *quiet);
   cmd->callback([=, &action] {
     action = [=]() -> int {
+      require_one_use_of_stdout(*output, *json);
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
       std::optional<VerboseLog> log;
       synth::JobObservers observers;
@@ -34,11 +37,12 @@ void add_solve(CLI::App& app, Action& action) {
         observers.on_log = [&log](const std::string& line) { log->line("%s", line.c_str()); };
       }
       const synth::SolveOutcome r = problem->solve(observers);
-      hinf::write_file_atomic(*output, file_bytes(r, *format, *output), {*config});
+      write_output(*output, file_bytes(r, *format, *output), {*config});
       if (*json)
         print_json(r.json, {{"output", *output}});
-      else
-        std::cout << r.report << r.file_contents << " written to " << *output << "\n";
+      else if (!*quiet)
+        report_stream(*output) << r.report << r.file_contents << " written to "
+                               << (*output == "-" ? std::string("stdout") : *output) << "\n";
       return 0;
     };
   });

@@ -20,7 +20,14 @@ namespace {
 struct SweepArgs {
   std::string config, param, max_feasible, csv, json, plot;
   double tolerance = 1e-3;
+  bool quiet = false;
 };
+
+// The text report's stream: stdout, stderr when the CSV goes to stdout (-o -), none with -q.
+std::ostream& report(const SweepArgs& a) {
+  static std::ostream none(nullptr);
+  return a.quiet ? none : report_stream(a.csv);
+}
 
 // NAME=RANGE → (NAME, RANGE); Error InvalidInput naming the option otherwise.
 std::pair<std::string, std::string> name_and_range(const std::string& text, const std::string& option) {
@@ -92,14 +99,14 @@ double plot_floor(const std::vector<synth::SweepPoint>& points) {
   return floor > 0 ? floor : 1.0;
 }
 
-void print_points(const std::string& name, const std::vector<synth::SweepPoint>& points) {
+void print_points(std::ostream& out, const std::string& name, const std::vector<synth::SweepPoint>& points) {
   for (const auto& p : points) {
-    std::cout << name << " = " << num(p.value) << ": ";
+    out << name << " = " << num(p.value) << ": ";
     if (p.outcome == ErrorCode::Ok)
-      std::cout << "gamma = " << num(p.gamma) << " certified (" << p.form << " form)"
+      out << "gamma = " << num(p.gamma) << " certified (" << p.form << " form)"
                 << (p.gap_certified ? ", gamma* >= " + num(p.gamma_lower) : std::string()) << "\n";
     else
-      std::cout << synth::sweep_outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
+      out << synth::sweep_outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
   }
 }
 
@@ -110,9 +117,9 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
   const std::vector<double> values = synth::parse_sweep_range(range, "--param");
   const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
   const std::vector<synth::SweepPoint> points = synth::sweep(parameter, values, text, a.config);
-  print_points(name, points);
+  print_points(report(a), name, points);
   const std::string csv = sweep_csv(name, points);
-  if (!a.csv.empty()) write_file_atomic(a.csv, csv, {a.config});
+  if (!a.csv.empty()) write_output(a.csv, csv, {a.config});
   if (!a.json.empty()) {
     Json j = Json::object();
     j["schema"] = synth::json_schema("sweep");
@@ -139,22 +146,22 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
   const double hi = synth::parse_sweep_range(range.substr(colon + 1), "--max-feasible").front();
   const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
   const synth::FeasibilitySearch s = synth::max_feasible(parameter, lo, hi, a.tolerance, text, a.config);
-  print_points(name, s.evaluated);
+  print_points(report(a), name, s.evaluated);
   const synth::SweepPoint& best = s.largest_certified;
-  std::cout << "largest certified " << name << " = " << num(best.value) << " (gamma = " << num(best.gamma) << ")";
-  if (!s.bracketed) std::cout << ": the upper end of the range; the boundary, if any, lies above it\n";
+  report(a) << "largest certified " << name << " = " << num(best.value) << " (gamma = " << num(best.gamma) << ")";
+  if (!s.bracketed) report(a) << ": the upper end of the range; the boundary, if any, lies above it\n";
   else {
     const synth::SweepPoint& up = *s.smallest_not_certified;
-    std::cout << "; no certified filter at " << num(up.value) << " (" << synth::sweep_outcome_word(up.outcome)
+    report(a) << "; no certified filter at " << num(up.value) << " (" << synth::sweep_outcome_word(up.outcome)
               << "): bracket width " << num(s.width) << "\n";
     if (!s.smallest_infeasible)
-      std::cout << "no point was verified infeasible: above " << num(best.value)
+      report(a) << "no point was verified infeasible: above " << num(best.value)
                 << " the solver failed numerically, which is not a proof that no filter exists\n";
     else if (s.smallest_infeasible->value == up.value)
-      std::cout << "verified infeasible at " << num(up.value) << ": the boundary lies in [" << num(best.value)
+      report(a) << "verified infeasible at " << num(up.value) << ": the boundary lies in [" << num(best.value)
                 << ", " << num(up.value) << "]\n";
     else
-      std::cout << "verified infeasible from " << num(s.smallest_infeasible->value) << ": the boundary lies in ["
+      report(a) << "verified infeasible from " << num(s.smallest_infeasible->value) << ": the boundary lies in ["
                 << num(best.value) << ", " << num(s.smallest_infeasible->value) << "]; between " << num(up.value)
                 << " and " << num(s.smallest_infeasible->value)
                 << " the solver failed numerically (no verdict: neither a filter nor a proof that none exists)\n";
@@ -172,7 +179,7 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
     for (const auto& p : s.evaluated) j["evaluated"].push_back(point_json(p));
     write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
   }
-  if (!a.csv.empty()) write_file_atomic(a.csv, sweep_csv(name, s.evaluated), {a.config});
+  if (!a.csv.empty()) write_output(a.csv, sweep_csv(name, s.evaluated), {a.config});
   return 0;
 }
 
@@ -190,7 +197,8 @@ void add_sweep(CLI::App& app, Action& action) {
   auto* maxf = cmd->add_option("--max-feasible", a->max_feasible, "NAME=LO:HI: the largest certified value in [LO, HI]");
   param->excludes(maxf);
   cmd->add_option("--tolerance", a->tolerance, "--max-feasible: width of the final bracket (default 1e-3)");
-  cmd->add_option("-o,--output", a->csv, "CSV of every point (parameter, value, outcome, exit_code, gamma, ...)");
+  cmd->add_option("-o,--output", a->csv, "CSV of every point (parameter, value, outcome, exit_code, gamma, ...; - for stdout)");
+  add_quiet_flag(*cmd, a->quiet);
   cmd->add_option("--json", a->json, "the same as JSON");
   cmd->add_option("--plot", a->plot, "PNG of gamma against the parameter (--param; gnuplot)");
   cmd->callback([a, &action] {

@@ -12,13 +12,15 @@ void add_verify(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("verify", "re-derive the certificate (docs/maths.md §7, checks 2-4) of a gains file against a config, or of a controller file against a controller config");
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML (must state gamma)");
   auto json = std::make_shared<bool>(false);
+  auto quiet = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.verify/1) instead of text");
+  add_quiet_flag(*cmd, *quiet);
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const synth::VerifyOutcome v = synth::load_problem(args->config)->verify(args->gains);
       if (*json)
         print_json(v.json);
-      else
+      else if (!*quiet)
         std::cout << v.report;
       return v.holds ? 0 : 1;
     };
