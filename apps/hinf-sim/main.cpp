@@ -13,12 +13,14 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
+#include <unistd.h>
 
 #include "hinf/common/input_file.hpp"
 #include "hinf/matfile/mat_file.hpp"
 #include "hinf/sim/family.hpp"
 #include "hinf/sim/plots.hpp"
 #include "hinf/sim/simulation_error.hpp"
+#include "hinf/sim/summary_table.hpp"
 #include "options.hpp"
 
 namespace {
@@ -58,7 +60,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--jobs,-j", o.jobs, "parallel runs (default: hardware threads)")->check(CLI::Range(1, 4096));
   app.add_option("--duration", o.duration, "override the scenario's duration (s)")->check(kFinitePositive);
   app.add_flag("--no-plots", o.no_plots, "do not run gnuplot");
-  app.add_flag("--quiet,-q", o.quiet, "no progress bar");
+  app.add_flag("--quiet,-q", o.quiet, "no progress, no end-of-run table");
   app.add_flag("--verbose,-v", o.verbose, "report gains origin and synthesis progress");
   app.add_option("--format", o.format, "csv (default) or mat: also run.mat, every CSV table and the summary as MATLAB variables")
       ->check(CLI::IsMember({"csv", "mat"}));
@@ -146,7 +148,13 @@ int run(int argc, char** argv) {
   } catch (const hinf::sim::PlotError& e) {
     return fail(std::string("plots: ") + e.what(), hinf::ErrorCode::InvalidInput);
   }
-  if (o.json) print_run_json(result, o);
+  if (o.json) {
+    print_run_json(result, o);
+  } else if (!o.quiet) {  // the end-of-run table (docs/cli.md)
+    for (const auto& [name, bytes] : result.files)
+      if (name == "summary.json") std::cout << hinf::sim::summary_table(bytes);
+    std::cout << "run directory: " << o.out_dir << "\n";
+  }
   return 0;
 }
 
@@ -161,6 +169,11 @@ hinf::sim::StatusLog status_log(bool enabled) {
 
 std::function<void(long, long)> progress_bar(bool enabled) {
   if (!enabled) return nullptr;
+  if (!isatty(STDERR_FILENO))  // a log, not a terminal: a line per tenth of the runs, no \r frames
+    return [](long done, long total) {
+      if (done == total || (10 * done) / total != (10 * (done - 1)) / total)
+        std::cerr << "hinf-sim: " << (100 * done) / total << " % of the runs (" << done << "/" << total << ")\n";
+    };
   return [](long done, long total) {
     const int width = 40;
     const int filled = static_cast<int>(width * done / total);

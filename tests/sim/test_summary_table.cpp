@@ -1,0 +1,46 @@
+// hinf-sim's end-of-run table (sim/summary_table.hpp) from hand-written summaries: one run's
+// numbers, mean ± std over runs, the outcome column, RMS figures first, per-axis variants left
+// out, a summary without filters or metrics giving no table.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "hinf/sim/summary_table.hpp"
+
+namespace {
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(SummaryTable, OneRunShowsItsNumbersAndOutcome) {
+  const std::string t = hinf::sim::summary_table(
+      R"({"filters": {"hinf": {"position_max_m": 0.8, "position_rms_m": 0.34, "converged": true, "diverged": false},
+                      "ekf": {"position_max_m": 9, "position_rms_m": 1e3, "converged": false, "diverged": true,
+                              "diverged_at_s": 12.5}}})");
+  EXPECT_LT(t.find("position_rms_m"), t.find("position_max_m")) << t;  // RMS first
+  EXPECT_NE(t.find("hinf"), std::string::npos);
+  EXPECT_NE(t.find("0.34"), std::string::npos) << t;
+  EXPECT_NE(t.find("converged"), std::string::npos);
+  EXPECT_NE(t.find("DIVERGED at 12.5 s"), std::string::npos) << t;
+  EXPECT_EQ(count(t, "\n"), 3);  // header and two rows
+}
+
+TEST(SummaryTable, SeveralRunsShowMeanAndStd) {
+  const std::string t = hinf::sim::summary_table(
+      R"({"filters": {"rekf": {"attitude_rms_deg": {"mean": 0.5, "std": 0.25, "min": 0.1, "max": 1, "count": 3},
+                               "attitude_rms_deg_roll": {"mean": 0.1, "std": 0.1, "min": 0, "max": 0.3, "count": 3},
+                               "diverged_runs": 1}}})");
+  EXPECT_NE(t.find("0.5 ± 0.25"), std::string::npos) << t;
+  EXPECT_EQ(t.find("attitude_rms_deg_roll"), std::string::npos) << t;  // a per-axis variant of one shown
+  EXPECT_NE(t.find("1 runs diverged"), std::string::npos) << t;
+}
+
+TEST(SummaryTable, ControllerMetricsOrNothing) {
+  EXPECT_NE(hinf::sim::summary_table(R"({"metrics": {"position_rms_m": 0.0033}})").find("controller"), std::string::npos);
+  EXPECT_EQ(hinf::sim::summary_table(R"({"format": "hinf-sim-summary/1"})"), "");
+}
+
+}  // namespace
