@@ -49,6 +49,15 @@ void add_quiet_flag(CLI::App& cmd, bool& quiet) {
   cmd.add_flag("-q,--quiet", quiet, "no report on success (errors and --json are still printed)");
 }
 
+synth::JobObservers verbose_observers(bool enabled, std::optional<VerboseLog>& log) {
+  synth::JobObservers observers;
+  if (!enabled) return observers;
+  log.emplace(stderr);
+  observers.on_iteration = IterationTable(*log);
+  observers.on_log = [&log](const std::string& line) { log->line("%s", line.c_str()); };
+  return observers;
+}
+
 void add_format_option(CLI::App& cmd, std::string& format) {
   cmd.add_option("--format", format, "file format: yaml or mat (MATLAB; default: mat if the output ends in .mat)")
       ->check(CLI::IsMember({"yaml", "mat"}));

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -42,6 +43,9 @@ std::ostream& report_stream(const std::string& output);
 void require_one_use_of_stdout(const std::string& output, bool json);
 // -q/--quiet on a subcommand: no report on success (errors and --json are still printed).
 void add_quiet_flag(CLI::App& cmd, bool& quiet);
+// -v: the verbose account of a synthesis (coefficient ranges, sizes, the iteration table) on
+// stderr through `log`, which must outlive the observers; none when `enabled` is false.
+synth::JobObservers verbose_observers(bool enabled, std::optional<VerboseLog>& log);
 
 using Json = nlohmann::ordered_json;  // keys in the order written
 // --json: one line of JSON on stdout (a path that is not UTF-8 with U+FFFD rather than refused).

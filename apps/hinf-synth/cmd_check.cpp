@@ -5,6 +5,8 @@
 // function differs is still accepted when it remains certified for the config at the golden
 // γ (within min(rtol, 1e-6)): an equally optimal design.
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -19,15 +21,20 @@ void add_check(CLI::App& app, Action& action) {
   auto rtol = std::make_shared<double>(1e-6);
   auto json = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
+  auto verbose = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
   cmd->add_option("--golden", *golden, "golden gains or controller YAML")->required();
   cmd->add_option("--rtol", *rtol, "relative tolerance on gamma and on the designs' transfer-function difference")
       ->check(CLI::Range(1e-14, 1.0));
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.check/1) instead of text");
   add_quiet_flag(*cmd, *quiet);
+  cmd->add_flag("-v,--verbose", *verbose, "the re-synthesis's iteration table on stderr");
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::CheckOutcome c = synth::load_problem(*config)->check(*golden, *rtol);
+      const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
+      std::optional<VerboseLog> log;
+      const synth::CheckOutcome c =
+          problem->check(*golden, *rtol, verbose_observers(*verbose || problem->verbose(), log));
       if (*json)
         print_json(c.json);
       else if (!*quiet)

@@ -30,13 +30,7 @@ void add_solve(CLI::App& app, Action& action) {
       require_one_use_of_stdout(*output, *json);
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
       std::optional<VerboseLog> log;
-      synth::JobObservers observers;
-      if (*verbose || problem->verbose()) {
-        log.emplace(stderr);
-        observers.on_iteration = IterationTable(*log);
-        observers.on_log = [&log](const std::string& line) { log->line("%s", line.c_str()); };
-      }
-      const synth::SolveOutcome r = problem->solve(observers);
+      const synth::SolveOutcome r = problem->solve(verbose_observers(*verbose || problem->verbose(), log));
       write_output(*output, file_bytes(r, *format, *output), {*config});
       if (*json)
         print_json(r.json, {{"output", *output}});

@@ -23,10 +23,11 @@ struct SweepArgs {
   bool quiet = false;
 };
 
-// The text report's stream: stdout, stderr when the CSV goes to stdout (-o -), none with -q.
+// The text report's stream: stdout, stderr when the CSV or the JSON goes to stdout (-o -,
+// --json -), none with -q.
 std::ostream& report(const SweepArgs& a) {
   static std::ostream none(nullptr);
-  return a.quiet ? none : report_stream(a.csv);
+  return a.quiet ? none : report_stream(a.csv == "-" || a.json == "-" ? "-" : "");
 }
 
 // NAME=RANGE → (NAME, RANGE); Error InvalidInput naming the option otherwise.
@@ -127,7 +128,7 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
     j["parameter"] = name;
     j["points"] = Json::array();
     for (const auto& p : points) j["points"].push_back(point_json(p));
-    write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
+    write_output(a.json, j.dump(2) + "\n", {a.config});
   }
   if (!a.plot.empty())
     write_png_by_gnuplot(
@@ -177,7 +178,7 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
     j["bracket_width"] = s.bracketed ? Json(s.width) : Json(nullptr);
     j["evaluated"] = Json::array();
     for (const auto& p : s.evaluated) j["evaluated"].push_back(point_json(p));
-    write_file_atomic(a.json, j.dump(2) + "\n", {a.config});
+    write_output(a.json, j.dump(2) + "\n", {a.config});
   }
   if (!a.csv.empty()) write_output(a.csv, sweep_csv(name, s.evaluated), {a.config});
   return 0;
@@ -199,7 +200,7 @@ void add_sweep(CLI::App& app, Action& action) {
   cmd->add_option("--tolerance", a->tolerance, "--max-feasible: width of the final bracket (default 1e-3)");
   cmd->add_option("-o,--output", a->csv, "CSV of every point (parameter, value, outcome, exit_code, gamma, ...; - for stdout)");
   add_quiet_flag(*cmd, a->quiet);
-  cmd->add_option("--json", a->json, "the same as JSON");
+  cmd->add_option("--json", a->json, "the same as JSON, to this file (- for stdout)");
   cmd->add_option("--plot", a->plot, "PNG of gamma against the parameter (--param; gnuplot)");
   cmd->callback([a, &action] {
     action = [a]() -> int {
@@ -207,6 +208,8 @@ void add_sweep(CLI::App& app, Action& action) {
         throw Error(ErrorCode::InvalidInput, "sweep: give exactly one of --param NAME=LO:STEP:HI or --max-feasible NAME=LO:HI");
       if (!a->plot.empty() && a->param.empty())
         throw Error(ErrorCode::InvalidInput, "--plot is for --param sweeps");
+      if (a->csv == "-" && a->json == "-")
+        throw Error(ErrorCode::InvalidInput, "-o - and --json - both write to stdout: give one of them a file", "--json");
       const std::string text = read_input_file(a->config, "config", kMaxConfigBytes);
       return a->param.empty() ? run_max_feasible(*a, text) : run_sweep(*a, text);
     };

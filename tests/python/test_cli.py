@@ -45,3 +45,14 @@ def test_quiet_prints_nothing_on_success(tmp_path):
 def test_stdout_for_two_things_is_refused(tmp_path):
     run = synth("solve", CONFIG, "-o", "-", "--json")
     assert run.returncode == 2 and "-o - and --json both write to stdout" in run.stderr and run.stdout == ""
+
+
+def test_sweep_json_to_stdout_and_check_verbose():
+    sweep = synth("sweep", CONFIG, "--param", "delta_bar=0:1:1", "--json", "-")
+    assert sweep.returncode == 0
+    import json
+    assert json.loads(sweep.stdout)["schema"] == "hinf-synth.sweep/1" and "delta_bar = 1" in sweep.stderr
+    both = synth("sweep", CONFIG, "--param", "delta_bar=0:1:1", "--json", "-", "-o", "-")
+    assert both.returncode == 2 and "both write to stdout" in both.stderr
+    check = synth("check", CONFIG, "--golden", GOLDEN, "-v")
+    assert check.returncode == 0 and "phase  step" in check.stderr and "same" in check.stdout
