@@ -71,6 +71,16 @@ std::string file_bytes(const synth::SolveOutcome& r, const std::string& format, 
                                            file["tool"].get<std::string>());
 }
 
+void deliver_solved(const synth::SolveOutcome& r, const std::string& output, const std::string& format,
+                    const std::string& config, bool json, bool quiet) {
+  write_output(output, file_bytes(r, format, output), {config});
+  if (json)
+    print_json(r.json, {{"output", output}});
+  else if (!quiet)
+    report_stream(output) << r.report << r.file_contents << " written to "
+                          << (output == "-" ? std::string("stdout") : output) << "\n";
+}
+
 void print_json(const Json& j) { std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n"; }
 
 void print_json(const std::string& json_line, const std::vector<std::pair<std::string, std::string>>& paths) {

@@ -34,6 +34,10 @@ void add_format_option(CLI::App& cmd, std::string& format);
 // The bytes of that file: the YAML as it is, or a MAT-file of the same keys
 // (hinf/matfile/mat_file.hpp; docs/file-formats.md "MATLAB files").
 std::string file_bytes(const synth::SolveOutcome& r, const std::string& format, const std::string& output);
+// solve's and kalman's end: the file written to `output` (or stdout) in `format`, then the JSON
+// (--json, with the output path) or the report, unless `quiet`.
+void deliver_solved(const synth::SolveOutcome& r, const std::string& output, const std::string& format,
+                    const std::string& config, bool json, bool quiet);
 // Output paths (docs/cli.md): "-" is stdout, which then carries the file's bytes alone (the
 // report goes to stderr). Otherwise the file is written atomically, never over `inputs`.
 void write_output(const std::string& path, const std::string& bytes, const std::vector<std::string>& inputs);

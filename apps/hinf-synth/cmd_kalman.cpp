@@ -27,12 +27,7 @@ void add_kalman(CLI::App& app, Action& action) {
     action = [=]() -> int {
       require_one_use_of_stdout(*output, *json);
       const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
-      write_output(*output, file_bytes(r, *format, *output), {*config});
-      if (*json)
-        print_json(r.json, {{"output", *output}});
-      else if (!*quiet)
-        report_stream(*output) << r.report << r.file_contents << " written to "
-                               << (*output == "-" ? std::string("stdout") : *output) << "\n";
+      deliver_solved(r, *output, *format, *config, *json, *quiet);
       return 0;
     };
   });

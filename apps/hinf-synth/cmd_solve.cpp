@@ -31,12 +31,7 @@ void add_solve(CLI::App& app, Action& action) {
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
       std::optional<VerboseLog> log;
       const synth::SolveOutcome r = problem->solve(verbose_observers(*verbose || problem->verbose(), log));
-      write_output(*output, file_bytes(r, *format, *output), {*config});
-      if (*json)
-        print_json(r.json, {{"output", *output}});
-      else if (!*quiet)
-        report_stream(*output) << r.report << r.file_contents << " written to "
-                               << (*output == "-" ? std::string("stdout") : *output) << "\n";
+      deliver_solved(r, *output, *format, *config, *json, *quiet);
       return 0;
     };
   });

@@ -254,44 +254,43 @@ def test_sweep_and_compare_refuse_bad_input_naming_it(call, key):
     assert key in str(e.value)
 
 
-def test_ctrl_c_interrupts_a_solve_from_inside_the_call():
-    """SIGINT during hinf.synthesize raises KeyboardInterrupt out of the call itself (the
-    solver polls Python's signal handlers), not after the solve has run to its end."""
+def interrupted_inside(call, argument):
+    """Runs `call` (Python text calling hinf with sys.argv[1] = argument) in a child, sends it
+    SIGINT 0.5 s after it has started, and returns what it printed: "interrupted in FILE" with
+    the KeyboardInterrupt's last frame, or "returned"."""
     script = ("import signal, sys, traceback, hinf\n"
               "signal.signal(signal.SIGINT, signal.default_int_handler)  # even if started with SIGINT ignored\n"
               "print('started', flush=True)\n"
               "try:\n"
-              "    hinf.synthesize(sys.argv[1])\n"
+              "    " + call + "\n"
               "    print('returned')\n"
               "except KeyboardInterrupt:\n"
               "    print('interrupted in', traceback.extract_tb(sys.exc_info()[2])[-1].filename)\n")
-    child = subprocess.Popen([sys.executable, "-c", script, path("tests", "data", "random-n16-seed1.yaml")],
-                             stdout=subprocess.PIPE, text=True)  # a solve of about 10 s on this machine
+    child = subprocess.Popen([sys.executable, "-c", script, argument], stdout=subprocess.PIPE, text=True)
     assert child.stdout.readline().strip() == "started"
     time.sleep(0.5)
     child.send_signal(signal.SIGINT)
-    out, _ = child.communicate(timeout=600)
-    assert out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py")), out
+    return child.communicate(timeout=600)[0]
+
+
+def raised_from_inside_the_call(out):
+    return out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py"))
+
+
+def test_ctrl_c_interrupts_a_solve_from_inside_the_call():
+    """SIGINT during hinf.synthesize raises KeyboardInterrupt out of the call itself (the
+    solver polls Python's signal handlers), not after the solve has run to its end."""
+    out = interrupted_inside("hinf.synthesize(sys.argv[1])",  # a solve of about 10 s on this machine
+                             path("tests", "data", "random-n16-seed1.yaml"))
+    assert raised_from_inside_the_call(out), out
 
 
 def test_ctrl_c_interrupts_a_campaign_between_its_runs():
     """SIGINT during hinf.simulate: no further Monte-Carlo run starts and KeyboardInterrupt is
     raised out of the call once the run under way has ended."""
-    script = ("import signal, sys, traceback, hinf\n"
-              "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
-              "print('started', flush=True)\n"
-              "try:\n"
-              "    hinf.simulate(sys.argv[1], runs=50, seed=1, jobs=1)\n"
-              "    print('returned')\n"
-              "except KeyboardInterrupt:\n"
-              "    print('interrupted in', traceback.extract_tb(sys.exc_info()[2])[-1].filename)\n")
-    child = subprocess.Popen([sys.executable, "-c", script, path("configs", "scenarios", "paper-control.yaml")],
-                             stdout=subprocess.PIPE, text=True)  # 50 runs of a few seconds each
-    assert child.stdout.readline().strip() == "started"
-    time.sleep(0.5)
-    child.send_signal(signal.SIGINT)
-    out, _ = child.communicate(timeout=600)
-    assert out.startswith("interrupted in") and out.strip().endswith(os.path.join("hinf", "__init__.py")), out
+    out = interrupted_inside("hinf.simulate(sys.argv[1], runs=50, seed=1, jobs=1)",  # 50 runs of a few seconds each
+                             path("configs", "scenarios", "paper-control.yaml"))
+    assert raised_from_inside_the_call(out), out
 
 
 def test_the_runtime_ekf_on_a_linear_model_is_the_kalman_recursion():
