@@ -83,7 +83,8 @@ void add_mat_file(hinf::sim::CampaignResult& result) {
 
 // --json: one line on stdout once the run directory is written: what it holds and the
 // summary (summary.json's own object, numbers bit for bit).
-void print_run_json(const hinf::sim::CampaignResult& result, const Options& o) {
+void print_run_json(const hinf::sim::CampaignResult& result, const hinf::sim::RunDirectoryReplaced& replaced,
+                    const Options& o) {
   using Json = nlohmann::ordered_json;
   Json j;
   j["schema"] = "hinf-sim.run/1";
@@ -96,8 +97,22 @@ void print_run_json(const hinf::sim::CampaignResult& result, const Options& o) {
     if (name == "summary.json") summary = Json::parse(bytes);
   }
   j["plots"] = result.plots && !o.no_plots;
+  j["replaced_previous_run"] = replaced.previous_run;
+  j["removed_previous_files"] = replaced.removed;
   j["summary"] = std::move(summary);
   std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+}
+
+// A run into a directory that held one (its manifest.txt) says so, with the files of that run
+// this one did not write and removed.
+void print_replaced(const hinf::sim::RunDirectoryReplaced& replaced, const std::string& dir) {
+  std::cerr << "hinf-sim: note: " << dir << " held an earlier run; replaced";
+  if (!replaced.removed.empty()) {
+    std::cerr << " (removed its files this run did not write:";
+    for (const std::string& name : replaced.removed) std::cerr << " " << name;
+    std::cerr << ")";
+  }
+  std::cerr << "\n";
 }
 
 int run(int argc, char** argv) {
@@ -140,17 +155,19 @@ int run(int argc, char** argv) {
   } catch (const hinf::sim::SimulationError& e) {  // a run that cannot go on
     return fail(e.what(), hinf::ErrorCode::NumericalFailure);
   }
+  hinf::sim::RunDirectoryReplaced replaced;
   try {
     if (o.format == "mat") add_mat_file(result);
-    hinf::sim::write_campaign(result, o.out_dir, o.scenario_path, !o.no_plots);
+    replaced = hinf::sim::write_campaign(result, o.out_dir, o.scenario_path, !o.no_plots);
   } catch (const hinf::Error& e) {
     return fail(e.what(), hinf::ErrorCode::InvalidInput);
   } catch (const hinf::sim::PlotError& e) {
     return fail(std::string("plots: ") + e.what(), hinf::ErrorCode::InvalidInput);
   }
   if (o.json) {
-    print_run_json(result, o);
+    print_run_json(result, replaced, o);
   } else if (!o.quiet) {  // the end-of-run table (docs/cli.md)
+    if (replaced.previous_run) print_replaced(replaced, o.out_dir);
     for (const auto& [name, bytes] : result.files)
       if (name == "summary.json") std::cout << hinf::sim::summary_table(bytes);
     std::cout << "run directory: " << o.out_dir << "\n";

@@ -190,6 +190,12 @@ std::string AtomicFileSet::add(const std::string& path, const std::string& conte
 
 std::string AtomicFileSet::reserve(const std::string& path) { return add(path, std::string()); }
 
+std::vector<std::string> AtomicFileSet::targets() const {
+  std::vector<std::string> out;
+  for (const Entry& e : entries_) out.push_back(e.target);
+  return out;
+}
+
 // Before the renames, each existing target gets a hard link under a fresh name, so that
 // a rename failing part-way can put every previous file back (all or nothing, also for
 // the files this commit had already replaced). 0 or an errno value.

@@ -14,6 +14,7 @@ const Family& tumbling_hold();       // sim/families/tumbling_hold
 const Family& gps_ins_relative();    // sim/families/gps_ins_relative
 const Family& gyroless_attitude();   // sim/families/gyroless_attitude
 const Family& manoeuvring_target();  // sim/families/manoeuvring_target
+const Family& linear_plant();        // sim/families/linear_plant
 
 // The Monte-Carlo runs of a family (run_family_campaign) with the request's runs, jobs, seed
 // progress and interruption: stats[run][filter], run 0's samples into *samples when given.

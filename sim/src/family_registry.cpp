@@ -13,8 +13,12 @@ namespace hinf::sim {
 namespace {
 
 using Accessor = const Family& (*)();
-constexpr std::array<Accessor, 5> kFamilies{&families::hill, &families::tumbling_hold, &families::gps_ins_relative,
-                                            &families::gyroless_attitude, &families::manoeuvring_target};
+constexpr std::array kFamilies{&families::hill,
+                               &families::tumbling_hold,
+                               &families::gps_ins_relative,
+                               &families::gyroless_attitude,
+                               &families::manoeuvring_target,
+                               &families::linear_plant};
 
 }  // namespace
 
@@ -35,16 +39,15 @@ CampaignResult simulate(const CampaignRequest& request) {
   return family_of(request.scenario_text, request.scenario_path).simulate(request);
 }
 
-void write_campaign(const CampaignResult& result, const std::string& out_dir, const std::string& scenario_path,
-                    bool plots) {
+RunDirectoryReplaced write_campaign(const CampaignResult& result, const std::string& out_dir,
+                                    const std::string& scenario_path, bool plots) {
   std::vector<std::string> read = result.inputs;
   read.push_back(scenario_path);
   const std::string title = std::filesystem::path(scenario_path).stem().string();
-  write_run_directory(out_dir, result.files, read,
-                      plots && result.plots && result.draw_plots
-                          ? std::function<void(AtomicFileSet&)>(
-                                [&](AtomicFileSet& outputs) { result.draw_plots(out_dir, title, outputs); })
-                          : std::function<void(AtomicFileSet&)>());
+  std::function<void(AtomicFileSet&)> draw;
+  if (plots && result.plots && result.draw_plots)
+    draw = [&](AtomicFileSet& outputs) { result.draw_plots(out_dir, title, outputs); };
+  return write_run_directory(out_dir, result.files, read, draw);
 }
 
 }  // namespace hinf::sim

@@ -19,27 +19,33 @@ void refuse_known_input(Eigen::Index r, const std::string& source) {
 }
 }  // namespace
 
-ObtainedGains obtain_gains(const LtiGainsSource& source, const StatusLog& log) {
-  ObtainedGains out;
+ObtainedGains obtain_gains(const LtiGainsSource& source, const StatusLog& log, KnownInput known_input) {
   if (!source.gains_path.empty()) {
+    ObtainedGains out;
     // read once: the bytes parsed are the bytes copied into the run directory
     out.gains_yaml = hinf::read_input_file(source.gains_path, "gains file", hinf::kMaxGainsBytes);
     const auto file = hinf::runtime_yaml::parse_gains_yaml(out.gains_yaml, source.gains_path);
-    refuse_known_input(file.G_F.cols(), source.gains_path);
+    if (known_input == KnownInput::Refused) refuse_known_input(file.G_F.cols(), source.gains_path);
     out.gains = {file.A_F, file.B_F, file.C_F, file.D_F};
     out.gamma = file.gamma;
     out.origin = "gains file " + source.gains_path;
     return out;
   }
-  auto config = hinf::synth::load_config(source.synthesize_path);
+  const auto config = hinf::synth::load_config(source.synthesize_path);
   if (log) log("synthesising from " + source.synthesize_path + " ...");
   const hinf::synth::SynthesisResult r = hinf::synth::synthesize(config.plant, config.settings);
-  refuse_known_input(r.filter.G_F.cols(), source.synthesize_path);
-  out.gains = {r.filter.A_F, r.filter.B_F, r.filter.C_F, r.filter.D_F};
-  out.gamma = r.gamma;
+  if (known_input == KnownInput::Refused) refuse_known_input(r.filter.G_F.cols(), source.synthesize_path);
+  return obtained_from(r, config, "synthesised from " + source.synthesize_path);
+}
+
+ObtainedGains obtained_from(const hinf::synth::SynthesisResult& result, const hinf::synth::SynthConfig& config,
+                            const std::string& origin) {
+  ObtainedGains out;
+  out.gains = {result.filter.A_F, result.filter.B_F, result.filter.C_F, result.filter.D_F};
+  out.gamma = result.gamma;
   // The synthesis library's own writer: the same file `hinf-synth solve -o` writes.
-  out.gains_yaml = hinf::synth::format_gains_yaml(r, {source.synthesize_path, config.sha256, config.sample_time()});
-  out.origin = "synthesised from " + source.synthesize_path;
+  out.gains_yaml = hinf::synth::format_gains_yaml(result, {config.path, config.sha256, config.sample_time()});
+  out.origin = origin;
   return out;
 }
 

@@ -80,6 +80,11 @@ MetricStats compute_stats(const std::vector<std::optional<double>>& values) {
     ++s.count;
   }
   if (s.count == 0) return s;
+  if (s.min == s.max) {  // identical values: their mean and a zero spread exactly, not a rounded sum's
+    s.mean = s.min;
+    s.std = 0;
+    return s;
+  }
   s.mean = sum / s.count;
   double ss = 0;
   for (const auto& v : values)

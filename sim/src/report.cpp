@@ -14,12 +14,12 @@ std::string format_trajectory_csv(const Trajectory& tr) {
   out += '\n';
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
     append_num(out, tr.t[k]);
-    for (int i = 0; i < 6; ++i) out += ',', append_num(out, tr.truth[k](i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, tr.measurement[k].cartesian(i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, tr.measurement[k].rae(i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, tr.thrust[k](i));
+    append_cells(out, tr.truth[k], 6);
+    append_cells(out, tr.measurement[k].cartesian, 3);
+    append_cells(out, tr.measurement[k].rae, 3);
+    append_cells(out, tr.thrust[k], 3);
     for (const auto& f : tr.filters)
-      for (int i = 0; i < 6; ++i) out += ',', append_num(out, f.estimate[k](i));
+      append_cells(out, f.estimate[k], 6);
     out += '\n';
   }
   return out;

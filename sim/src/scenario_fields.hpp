@@ -72,16 +72,21 @@ void read_named_filters(const YamlMap& top, std::size_t max_filters, const std::
 // The most samples a run may take (1e7: 116 days at 1 s).
 constexpr double kMaxScenarioSamples = 1e7;
 
+// `duration` (at the map `top`) a whole multiple of `sample_time`, 1 … 1e7 samples.
+inline void require_whole_samples(const YamlMap& top, double duration, double sample_time) {
+  const double k = duration / sample_time;
+  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
+    top.fail_value("duration", duration, "must be a whole multiple of sample_time " + number_text(sample_time));
+  if (k > kMaxScenarioSamples) top.fail_value("duration", duration, "needs more than 1e7 samples");
+}
+
 // `duration` (required, a whole multiple of `sample_time`, at most 1e7 samples), `sample_time`
 // and `truth_substeps` (1…1000) of a sampled scenario; absent optional keys keep their value.
 inline void read_sampled_timing(const YamlMap& top, double& duration, double& sample_time, int& truth_substeps) {
   top.required("duration", "s");
   duration = top.positive("duration");
   sample_time = top.positive("sample_time", sample_time);
-  const double k = duration / sample_time;
-  if (std::abs(k - std::round(k)) > 1e-9 * k || std::round(k) < 1)
-    top.fail_value("duration", duration, "must be a whole multiple of sample_time " + number_text(sample_time));
-  if (k > kMaxScenarioSamples) top.fail_value("duration", duration, "needs more than 1e7 samples");
+  require_whole_samples(top, duration, sample_time);
   truth_substeps = top.integer("truth_substeps", truth_substeps);
   if (truth_substeps < 1 || truth_substeps > 1000) top.fail("truth_substeps", "must be in 1…1000");
 }

@@ -23,6 +23,18 @@ inline void append_num(std::string& out, double v) {
   out += buf;
 }
 
+// ",v(0),…,v(n-1)" after a CSV row's first cells (v: any vector indexable by int).
+template <class Vector>
+void append_cells(std::string& out, const Vector& v, int n) {
+  for (int i = 0; i < n; ++i) out += ',', append_num(out, v(i));
+}
+
+// ",<prefix><name>" for each of `names`: columns of a CSV header.
+template <class Names>
+void append_columns(std::string& out, const std::string& prefix, const Names& names) {
+  for (const auto& name : names) out += "," + prefix + name;
+}
+
 using Json = nlohmann::ordered_json;  // keys in the order written
 
 // summary.json never holds a non-finite number (docs/experiments.md, "Output files").
@@ -80,6 +92,31 @@ void add_metrics_json(Json& m, const std::vector<std::vector<std::pair<Name, dou
     m[per_run.front()[k].first] =
         per_run.size() > 1 ? stats_json(values) : std::isfinite(values.front()) ? Json(values.front()) : Json(nullptr);
   }
+}
+
+// metrics(stats[r][f]) for every run r: filter f's (name, value) lists, as add_metrics_json takes them.
+template <class Stats, class Metrics>
+auto metrics_per_run(const std::vector<std::vector<Stats>>& stats, std::size_t f, const Metrics& metrics) {
+  std::vector<decltype(metrics(stats.front()[f]))> per_run;
+  for (const auto& run : stats) per_run.push_back(metrics(run[f]));
+  return per_run;
+}
+
+// runs.csv of a family whose filters each have one (name, value) metric list: "run,seed,filter",
+// the metrics' names (from a default Stats), then one row per run and filter.
+template <class Filters, class Stats, class Metrics>
+std::string metrics_runs_csv(const Filters& filters, const std::vector<std::vector<Stats>>& stats,
+                             const std::vector<std::uint64_t>& seeds, const Metrics& metrics) {
+  std::string out = "run,seed,filter";
+  for (const auto& [name, value] : metrics(Stats())) out += std::string(",") + name;
+  out += '\n';
+  for (std::size_t r = 0; r < stats.size(); ++r)
+    for (std::size_t f = 0; f < filters.size(); ++f) {
+      out += std::to_string(r) + "," + std::to_string(seeds[r]) + "," + filters[f].name;
+      for (const auto& [name, value] : metrics(stats[r][f])) out += ',', append_num(out, value);
+      out += '\n';
+    }
+  return out;
 }
 
 // The keys every summary.json starts with.

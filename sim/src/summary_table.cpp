@@ -49,11 +49,16 @@ void pad(std::string& line, std::size_t width) {
   line.append(n < width ? width - n : 1, ' ');
 }
 
-// The metrics of a row to show: RMS figures first, then the others, in the summary's order,
-// leaving out per-axis variants of one already taken (attitude_rms_deg_roll after
-// attitude_rms_deg).
-std::vector<std::string> headline_metrics(const Json& row) {
+// The metrics of a row to show: the summary's own `headline_metrics` when it names them;
+// otherwise RMS figures first, then the others, in the summary's order, leaving out per-axis
+// variants of one already taken (attitude_rms_deg_roll after attitude_rms_deg).
+std::vector<std::string> headline_metrics(const Json& summary, const Json& row) {
   std::vector<std::string> names;
+  if (summary.contains("headline_metrics") && summary["headline_metrics"].is_array()) {
+    for (const Json& n : summary["headline_metrics"])
+      if (n.is_string() && names.size() < kTableMetrics) names.push_back(n.get<std::string>());
+    return names;
+  }
   for (const bool rms : {true, false})
     for (auto it = row.begin(); it != row.end() && names.size() < kTableMetrics; ++it) {
       const std::string& k = it.key();
@@ -73,7 +78,7 @@ std::string summary_table(const std::string& summary_json) {
   if (s.contains("filters") && s["filters"].is_object()) rows = s["filters"];
   else if (s.contains("metrics") && s["metrics"].is_object()) rows["controller"] = s["metrics"];
   if (rows.empty()) return "";
-  const std::vector<std::string> names = headline_metrics(*rows.begin());
+  const std::vector<std::string> names = headline_metrics(s, *rows.begin());
   constexpr std::size_t kName = 18, kCell = 22;
   std::string out = "";
   pad(out, kName);

@@ -1,5 +1,6 @@
 """The command-line convention (docs/cli.md): '-o -' puts the file alone on stdout (the report
 on stderr), -q leaves stdout empty, '-o -' with --json is refused. Needs only the executable."""
+import json
 import os
 import re
 import subprocess
@@ -56,3 +57,29 @@ def test_sweep_json_to_stdout_and_check_verbose():
     assert both.returncode == 2 and "both write to stdout" in both.stderr
     check = synth("check", CONFIG, "--golden", GOLDEN, "-v")
     assert check.returncode == 0 and "phase  step" in check.stderr and "same" in check.stdout
+
+
+def test_a_run_replaces_the_earlier_run_in_its_directory(tmp_path):
+    """hinf-sim into a directory that holds a run: that run's files this one does not write
+    (its plots, when this one is --no-plots) are removed and the note says which; the user's own
+    files stay; --json says the same."""
+    sim = os.environ.get("HINF_SIM", os.path.join(ROOT, "build", "bin", "hinf-sim"))
+    scenario = os.path.join(ROOT, "configs", "scenarios", "paper-no-control.yaml")
+    out = tmp_path / "run"
+    first = subprocess.run([sim, scenario, "-o", str(out), "--duration", "100", "-q"], capture_output=True, text=True)
+    assert first.returncode == 0, first.stderr
+    pngs = sorted(p.name for p in out.iterdir() if p.suffix == ".png")
+    assert pngs and "position_error.png" in pngs
+    (out / "notes.txt").write_text("mine")
+    second = subprocess.run([sim, scenario, "-o", str(out), "--duration", "100", "--no-plots"],
+                            capture_output=True, text=True)
+    assert second.returncode == 0, second.stderr
+    assert not [p for p in out.iterdir() if p.suffix == ".png"]
+    assert (out / "notes.txt").read_text() == "mine"
+    assert f"hinf-sim: note: {out} held an earlier run; replaced (removed its files this run did not write: " \
+        in second.stderr
+    assert all(name in second.stderr for name in pngs)
+    third = subprocess.run([sim, scenario, "-o", str(out), "--duration", "100", "--no-plots", "--json"],
+                           capture_output=True, text=True)
+    j = json.loads(third.stdout)
+    assert third.returncode == 0 and j["replaced_previous_run"] is True and j["removed_previous_files"] == []

@@ -141,5 +141,6 @@ def test_hinf_sim_json_is_the_run_directorys_summary(tmp_path):
     assert len(lines) == 1
     j = json.loads(lines[0])
     assert j["schema"] == "hinf-sim.run/1" and j["out"] == str(out) and j["plots"] is False
-    assert sorted(j["files"]) == sorted(os.listdir(out))
+    assert sorted(j["files"] + ["manifest.txt"]) == sorted(os.listdir(out))
+    assert j["replaced_previous_run"] is False and j["removed_previous_files"] == []
     assert j["summary"] == json.loads((out / "summary.json").read_text())  # numbers bit for bit

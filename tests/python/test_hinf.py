@@ -103,8 +103,11 @@ def test_simulate_gives_the_executables_run_directory(tmp_path):
     cli = subprocess.run([SIM, scenario, "--out", str(out), "--runs", "2", "--seed", "7", "--no-plots", "--quiet",
                           "--duration", "300"], capture_output=True, text=True)
     assert cli.returncode == 0, cli.stderr
-    on_disk = sorted(p.name for p in out.iterdir() if p.suffix != ".png")
+    listing = sorted(p.name for p in out.iterdir())
+    on_disk = [name for name in listing if name != "manifest.txt" and not name.endswith(".png")]
     assert sorted(c.files) == on_disk
+    # the manifest lists what the run wrote (a later run into the directory removes the rest)
+    assert sorted((out / "manifest.txt").read_text().splitlines()[1:]) == on_disk
     for name, data in c.files.items():
         assert timing_apart(data.decode()) == timing_apart((out / name).read_text()), name
     runs = c.table("runs.csv")
@@ -112,7 +115,7 @@ def test_simulate_gives_the_executables_run_directory(tmp_path):
     assert c.summary
     # asked to, it writes the same run directory
     hinf.simulate(scenario, runs=2, seed=7, duration=300, out=tmp_path / "py")
-    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == on_disk
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == listing
     for name in on_disk:
         assert timing_apart((tmp_path / "py" / name).read_text()) == timing_apart((out / name).read_text()), name
 

@@ -93,4 +93,13 @@ TEST(Metrics, StatsSkipMissingAndUseSampleStd) {
   EXPECT_EQ(compute_stats({std::nullopt}).count, 0);
 }
 
+// Three copies of 0.1 sum to 0.30000000000000004: the mean of identical values is the value and
+// their spread exactly zero, not the rounding of a sum.
+TEST(Metrics, StatsOfIdenticalValuesAreExact) {
+  const auto s = compute_stats({0.1, 0.1, 0.1});
+  EXPECT_EQ(s.mean, 0.1);
+  EXPECT_EQ(s.std, 0.0);
+  EXPECT_EQ(s.count, 3);
+}
+
 }  // namespace

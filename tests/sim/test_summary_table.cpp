@@ -44,3 +44,21 @@ TEST(SummaryTable, ControllerMetricsOrNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// A family that names its headline metrics gets those columns, in its order, and no others
+// (linear_plant: the measured RMS beside the predicted one, not its δ columns or γ).
+TEST(SummaryTable, TheFamilysHeadlineMetricsWhenItNamesThem) {
+  const std::string t = hinf::sim::summary_table(
+      R"({"headline_metrics": ["error_rms", "predicted_error_rms", "error_max"],
+          "filters": {"kalman": {"gamma": 1.6, "delta_1": 1, "error_rms": 0.21, "predicted_error_rms": 0.2,
+                                 "error_max": 0.9, "diverged": false}}})");
+  EXPECT_EQ(t.find("gamma"), std::string::npos) << t;
+  EXPECT_EQ(t.find("delta_1"), std::string::npos) << t;
+  EXPECT_LT(t.find("error_rms"), t.find("predicted_error_rms")) << t;
+  EXPECT_LT(t.find("predicted_error_rms"), t.find("error_max")) << t;
+  EXPECT_NE(t.find("0.21"), std::string::npos) << t;
+}
+
+}  // namespace

@@ -4,10 +4,7 @@
 // (one campaign per fraction, same seeds).
 #include <algorithm>
 
-#include "hinf/sim/gps_ins_report.hpp"
-#include "hinf/sim/gps_ins_run.hpp"
-#include "hinf/sim/gps_ins_scenario_yaml.hpp"
-#include "stream_family.hpp"
+#include "gps_ins_report.hpp"
 
 namespace hinf::sim::families {
 namespace {
@@ -41,10 +38,8 @@ void table1(const CampaignRequest& r, const GpsInsExperiment& e, const Campaign&
 }
 
 const GpsIns::Functions& functions() {
-  static const GpsIns::Functions f{"gps_ins_relative",          parse_gps_ins_scenario,  shorten_gps_ins,
-                                   run_gps_ins,            format_gps_ins_trajectory_csv,
-                                   format_gps_ins_runs_csv,     format_gps_ins_summary_json,
-                                   write_gps_ins_plots,         table1};
+  static const GpsIns::Functions f{"gps_ins_relative", parse_gps_ins_scenario, shorten_gps_ins, run_gps_ins,
+                                   gps_ins_outputs(), table1};
   return f;
 }
 

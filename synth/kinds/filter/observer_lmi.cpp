@@ -41,17 +41,7 @@ ObserverLmi build(const Plant& P, const double* g_fixed, Estimate estimate) {
     M.add_term(3, 4, *O.N, -P.D.transpose(), MatrixXd::Identity(l, l), /*transpose=*/true);
   }
   // rows 3–6: −gI, −gI, −I, −λI
-  if (g_fixed) {
-    M.add_constant(2, 2, -*g_fixed * MatrixXd::Identity(p, p));
-    M.add_constant(3, 3, -*g_fixed * MatrixXd::Identity(q, q));
-    for (int b = 0; b < M.num_blocks(); ++b)
-      M.add_scalar_term(b, b, O.margin, -MatrixXd::Identity(M.block_size(b), M.block_size(b)));
-  } else {
-    M.add_scalar_term(2, 2, O.g, -MatrixXd::Identity(p, p));
-    M.add_scalar_term(3, 3, O.g, -MatrixXd::Identity(q, q));
-  }
-  M.add_constant(4, 4, -MatrixXd::Identity(l, l));
-  if (unc) add_multiplier_identity(M, P, O.lambda, 5);
+  add_filter_lmi_tail(M, P, g_fixed, O.g, O.margin, O.lambda, 2);
   return O;
 }
 }  // namespace

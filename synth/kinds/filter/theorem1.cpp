@@ -58,17 +58,7 @@ Theorem1Lmi build(const Plant& P, const double* g_fixed) {
   M.add_term(3, 3, T.S, -In, In);
   M.add_term(3, 6, T.CFbar, -In, MatrixXd::Identity(l, l), /*transpose=*/true);
   // rows 5–8: −gI, −gI, −I, −λI
-  if (g_fixed) {
-    M.add_constant(4, 4, -*g_fixed * MatrixXd::Identity(p, p));
-    M.add_constant(5, 5, -*g_fixed * MatrixXd::Identity(q, q));
-    for (int b = 0; b < M.num_blocks(); ++b)
-      M.add_scalar_term(b, b, T.margin, -MatrixXd::Identity(M.block_size(b), M.block_size(b)));
-  } else {
-    M.add_scalar_term(4, 4, T.g, -MatrixXd::Identity(p, p));
-    M.add_scalar_term(5, 5, T.g, -MatrixXd::Identity(q, q));
-  }
-  M.add_constant(6, 6, -MatrixXd::Identity(l, l));
-  if (unc) add_multiplier_identity(M, P, T.lambda, 7);
+  add_filter_lmi_tail(M, P, g_fixed, T.g, T.margin, T.lambda, 4);
   return T;
 }
 }  // namespace
@@ -108,6 +98,22 @@ void add_multiplier_identity(lmi::LmiProblem& M, const Plant& P, const std::vect
     I.diagonal().segment(at, size).setConstant(-1.0);
     M.add_scalar_term(h_block, h_block, lambda[b++], I);
   }
+}
+
+void add_filter_lmi_tail(lmi::LmiProblem& M, const Plant& P, const double* g_fixed, lmi::VarId g, lmi::VarId margin,
+                         const std::vector<lmi::VarId>& lambda, int first) {
+  const int p = P.p(), q = P.q(), l = P.l();
+  if (g_fixed) {
+    M.add_constant(first, first, -*g_fixed * MatrixXd::Identity(p, p));
+    M.add_constant(first + 1, first + 1, -*g_fixed * MatrixXd::Identity(q, q));
+    for (int b = 0; b < M.num_blocks(); ++b)
+      M.add_scalar_term(b, b, margin, -MatrixXd::Identity(M.block_size(b), M.block_size(b)));
+  } else {
+    M.add_scalar_term(first, first, g, -MatrixXd::Identity(p, p));
+    M.add_scalar_term(first + 1, first + 1, g, -MatrixXd::Identity(q, q));
+  }
+  M.add_constant(first + 2, first + 2, -MatrixXd::Identity(l, l));
+  if (P.uncertain()) add_multiplier_identity(M, P, lambda, first + 3);
 }
 
 Eigen::VectorXd multiplier_values(const lmi::LmiProblem& M, const std::vector<lmi::VarId>& lambda,

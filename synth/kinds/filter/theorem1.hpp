@@ -42,6 +42,12 @@ void add_multiplier_EtE(lmi::LmiProblem& M, const hinf::Plant& plant, const std:
                         const Eigen::MatrixXd& E, int e_block);
 void add_multiplier_identity(lmi::LmiProblem& M, const hinf::Plant& plant, const std::vector<lmi::VarId>& lambda,
                              int h_block);
+// The diagonal blocks both filter LMIs end with, from block `first` (docs/maths.md (50),
+// (124)): −g·I_p, −g·I_q, −I_l, then −λ_b·I on the multipliers' block when the plant is
+// uncertain. With γ² fixed (*g_fixed, the back-off problem) −γ²·I are constants and every
+// diagonal block gets −margin·I.
+void add_filter_lmi_tail(lmi::LmiProblem& M, const hinf::Plant& plant, const double* g_fixed, lmi::VarId g,
+                         lmi::VarId margin, const std::vector<lmi::VarId>& lambda, int first);
 // The multipliers' values at x.
 Eigen::VectorXd multiplier_values(const lmi::LmiProblem& M, const std::vector<lmi::VarId>& lambda,
                                   const Eigen::VectorXd& x);

@@ -44,6 +44,8 @@ class AtomicFileSet {
   // A fresh empty temporary for `path` that another program fills (e.g. gnuplot's
   // output); returns its name. It is renamed by commit() like the others.
   std::string reserve(const std::string& path);
+  // The targets added or reserved so far, in that order.
+  std::vector<std::string> targets() const;
   void commit();
 
  private:

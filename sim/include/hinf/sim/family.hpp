@@ -1,7 +1,7 @@
 // The simulation API every front end binds to (hinf-sim, and the coming Python module and
 // campaign shards): a scenario's text in, a campaign's run directory out — in memory first,
 // files second. Each experiment family (docs/experiments.md: the Hill/CW experiments,
-// tumbling_hold, gps_ins_relative, gyroless_attitude, manoeuvring_target) implements Family
+// tumbling_hold, gps_ins_relative, gyroless_attitude, manoeuvring_target, linear_plant) implements Family
 // in its own folder sim/families/<name>/ and is listed once in sim/src/family_registry.cpp.
 // Nothing here prints or exits.
 #pragma once
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hinf/common/atomic_file.hpp"
+#include "hinf/sim/run_directory.hpp"
 #include "hinf/sim/status_log.hpp"
 
 namespace hinf::sim {
@@ -62,9 +63,10 @@ const Family& family_of(const std::string& scenario_text, const std::string& sce
 CampaignResult simulate(const CampaignRequest& request);
 
 // Writes `result` as the run directory `out_dir` (sim/run_directory.hpp): every file to a
-// temporary, renamed together; none replaces the scenario file or one of result.inputs; plots
-// drawn unless `plots` is false. Throws hinf::Error or PlotError.
-void write_campaign(const CampaignResult& result, const std::string& out_dir, const std::string& scenario_path,
+// temporary, renamed together with the manifest; none replaces the scenario file or one of
+// result.inputs; plots drawn unless `plots` is false; an earlier run's files there that this
+// one did not write removed (returned). Throws hinf::Error or PlotError.
+RunDirectoryReplaced write_campaign(const CampaignResult& result, const std::string& out_dir, const std::string& scenario_path,
                     bool plots);
 
 }  // namespace hinf::sim

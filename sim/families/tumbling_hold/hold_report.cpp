@@ -11,10 +11,6 @@
 namespace hinf::sim {
 namespace {
 
-void append_vector(std::string& out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) out += ',', append_num(out, v(i));
-}
-
 // The metrics of one run in the order of runs.csv and summary.json.
 std::vector<std::pair<const char*, std::optional<double>>> metric_list(const HoldMetrics& m) {
   return {{"position_rms_m", m.position_rms_m},
@@ -34,10 +30,10 @@ std::string format_hold_trajectory_csv(const HoldTrajectory& tr) {
   out.reserve(tr.t.size() * 16 * 24);
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
     append_num(out, tr.t[k]);
-    append_vector(out, tr.error[k]);
-    append_vector(out, tr.velocity[k]);
-    append_vector(out, tr.command[k]);
-    append_vector(out, tr.force[k]);
+    append_cells(out, tr.error[k], 3);
+    append_cells(out, tr.velocity[k], 3);
+    append_cells(out, tr.command[k], 3);
+    append_cells(out, tr.force[k], 3);
     for (int i = 0; i < 3; ++i) out += ',' + std::to_string(tr.pulse[k](i));
     out += '\n';
   }

@@ -1,5 +1,5 @@
-// format_gyroless_* and write_gyroless_plots (gyroless_report.hpp).
-#include "hinf/sim/gyroless_report.hpp"
+// The output files of a gyroless_attitude run directory (gyroless_report.hpp).
+#include "gyroless_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -103,42 +103,39 @@ std::string plot_script(const GyrolessExperiment& e, const std::vector<Figure>& 
   gp << "set terminal pngcairo size 1000,900 enhanced font 'Sans,10'\nset grid\nset lmargin 12\nset rmargin 24\n";
   for (std::size_t i = 0; i < figs.size(); ++i) {
     const Figure& F = figs[i];
-    gp << "set output " << gnuplot_quoted(png[i]) << "\nset multiplot layout 3,1 title "
-       << gnuplot_quoted(title + ": " + F.title + ", run 0") << " noenhanced\n";
-    for (int c = 0; c < 3; ++c) {
-      const bool torque = F.block != rb::kAttitudeError;
-      const std::string label = torque ? std::string("T_") + kGyrolessAxes[c] + " (N m)" : std::string(kGyrolessErrorNames[c]) + " (deg)";
-      gp << "set ylabel " << gnuplot_quoted(label) << " noenhanced\n"
-         << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
-         << (c == 0 ? "set key outside right top\n" : "unset key\n") << "plot ";
+    const bool torque = F.block != rb::kAttitudeError;
+    const auto ylabel = [&](int c) {
+      return torque ? std::string("T_") + kGyrolessAxes[c] + " (N m)" : std::string(kGyrolessErrorNames[c]) + " (deg)";
+    };
+    const auto curves = [&](int c) {
+      std::ostringstream plot;
       if (F.block < 0) {
-        gp << gnuplot_quoted(data) << " using 1:" << 2 + c << " with lines lw 1.5 title 'truth'\n";
-        continue;
+        plot << gnuplot_quoted(data) << " using 1:" << 2 + c << " with lines lw 1.5 title 'truth'";
+        return plot.str();
       }
       for (std::size_t n = 0; n < F.filters.size(); ++n) {
         const std::size_t f = F.filters[n];
         const std::size_t col = 5 + 9 * f + static_cast<std::size_t>(F.block + c);
-        gp << (n ? ", " : "") << gnuplot_quoted(data) << " using 1:" << col << " with lines lw 1 lc " << n + 1
-           << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced";
+        plot << (n ? ", " : "") << gnuplot_quoted(data) << " using 1:" << col << " with lines lw 1 lc " << n + 1
+             << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced";
       }
-      gp << "\n";
-    }
-    gp << "unset multiplot\n";
+      return plot.str();
+    };
+    gp << gnuplot_stacked_figure(png[i], title + ": " + F.title + ", run 0", 3, ylabel, curves);
   }
   gp << "set output\n";
   return gp.str();
 }
 
-}  // namespace
-
+// samples[f] = filter f's samples of run 0.
 std::string format_gyroless_trajectory_csv(const GyrolessExperiment& e,
                                            const std::vector<std::vector<GyrolessSample>>& samples) {
   std::string out = "t";
-  for (const char* n : kTruthNames) out += std::string(",truth_") + n;
+  append_columns(out, "truth_", kTruthNames);
   for (const auto& f : e.filters) {
-    for (const char* n : kGyrolessErrorNames) out += "," + f.name + "_err_" + n;
-    for (const char* n : kGyrolessErrorNames) out += "," + f.name + "_sig_" + n;
-    for (const char* a : kGyrolessAxes) out += "," + f.name + "_Q_" + a;
+    append_columns(out, f.name + "_err_", kGyrolessErrorNames);
+    append_columns(out, f.name + "_sig_", kGyrolessErrorNames);
+    append_columns(out, f.name + "_Q_", kGyrolessAxes);
     out += "," + f.name + "_lambda_att," + f.name + "_lambda_rate," + f.name + "_lambda_torque," + f.name + "_nees";
   }
   out += '\n';
@@ -146,14 +143,14 @@ std::string format_gyroless_trajectory_csv(const GyrolessExperiment& e,
   for (std::size_t k = 0; k < steps; ++k) {
     const GyrolessSample& s0 = samples.front()[k];
     append_num(out, s0.t);
-    for (int i = 0; i < 10; ++i) out += ',', append_num(out, s0.truth(i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, s0.torque_rate(i));
+    append_cells(out, s0.truth, 10);
+    append_cells(out, s0.torque_rate, 3);
     for (const auto& filter : samples) {
       const GyrolessSample& s = filter[k];
       const auto err = in_report_units(s.error), sig = in_report_units(s.sigma);
-      for (int i = 0; i < 9; ++i) out += ',', append_num(out, err(i));
-      for (int i = 0; i < 9; ++i) out += ',', append_num(out, sig(i));
-      for (int i = 0; i < 3; ++i) out += ',', append_num(out, s.q_torque(i));
+      append_cells(out, err, 9);
+      append_cells(out, sig, 9);
+      append_cells(out, s.q_torque, 3);
       for (int b = 0; b < 3; ++b) out += ',', append_num(out, s.lambda.segment<3>(3 * b).maxCoeff());
       out += ',', append_num(out, s.nees);
     }
@@ -162,19 +159,11 @@ std::string format_gyroless_trajectory_csv(const GyrolessExperiment& e,
   return out;
 }
 
+// stats[r][f] = filter f's window statistics in run r.
 std::string format_gyroless_runs_csv(const GyrolessExperiment& e,
                                      const std::vector<std::vector<GyrolessFilterStatistics>>& stats,
                                      const std::vector<std::uint64_t>& seeds) {
-  std::string out = "run,seed,filter";
-  for (const auto& [name, value] : metric_list(GyrolessFilterStatistics())) out += "," + name;
-  out += '\n';
-  for (std::size_t r = 0; r < stats.size(); ++r)
-    for (std::size_t f = 0; f < e.filters.size(); ++f) {
-      out += std::to_string(r) + "," + std::to_string(seeds[r]) + "," + e.filters[f].name;
-      for (const auto& [name, value] : metric_list(stats[r][f])) out += ',', append_num(out, value);
-      out += '\n';
-    }
-  return out;
+  return metrics_runs_csv(e.filters, stats, seeds, [](const GyrolessFilterStatistics& s) { return metric_list(s); });
 }
 
 std::string format_gyroless_summary_json(const GyrolessExperiment& e,
@@ -185,8 +174,7 @@ std::string format_gyroless_summary_json(const GyrolessExperiment& e,
   j["steady_state_start_s"] = json_num(e.options.window_start);
   Json filters = Json::object();
   for (std::size_t f = 0; f < e.filters.size(); ++f) {
-    std::vector<std::vector<std::pair<std::string, double>>> per_run;  // [run][metric]
-    for (const auto& run : stats) per_run.push_back(metric_list(run[f]));
+    const auto per_run = metrics_per_run(stats, f, [](const GyrolessFilterStatistics& s) { return metric_list(s); });
     Json m = Json::object();
     m["type"] = e.filters[f].kind == GyrolessFilterKind::Aekf     ? "aekf"
                 : e.filters[f].kind == GyrolessFilterKind::Astekf ? "astekf"
@@ -199,6 +187,10 @@ std::string format_gyroless_summary_json(const GyrolessExperiment& e,
   return j.dump(2) + "\n";
 }
 
+// The source's Figs. 1–9 for run 0 into temporaries of `outputs`: fig1_torque.png (the true
+// torque), fig2/fig3 the torque and attitude errors of the AEKF sweep, fig4/fig5 of the
+// ASTEKF sweep, fig6/fig7 of the AAEKFs, fig8/fig9 the comparison of the named filters.
+// Throws PlotError (plots.hpp).
 void write_gyroless_plots(const std::string& dir, const GyrolessExperiment& e,
                           const std::vector<std::vector<GyrolessSample>>& samples, const std::string& title,
                           hinf::AtomicFileSet& outputs) {
@@ -215,4 +207,15 @@ void write_gyroless_plots(const std::string& dir, const GyrolessExperiment& e,
   run_plot_script(script, png, names);
 }
 
+}  // namespace
+
+namespace families {
+
+const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample>& gyroless_outputs() {
+  static const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample> outputs{
+      format_gyroless_trajectory_csv, format_gyroless_runs_csv, format_gyroless_summary_json, write_gyroless_plots};
+  return outputs;
+}
+
+}  // namespace families
 }  // namespace hinf::sim

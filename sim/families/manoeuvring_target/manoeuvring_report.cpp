@@ -1,5 +1,5 @@
-// format_manoeuvring_* and write_manoeuvring_plots (manoeuvring_report.hpp).
-#include "hinf/sim/manoeuvring_report.hpp"
+// The output files of a manoeuvring_target run directory (manoeuvring_report.hpp).
+#include "manoeuvring_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -137,29 +137,28 @@ void plot_filter(std::ostringstream& gp, const std::string& data, std::size_t f,
   const std::size_t base = 3 + 21 * f;
   const char* what[3] = {"position error (m)", "velocity error (m/s)", "manoeuvre error (m/s^2)"};
   for (int fig = 0; fig < 3; ++fig) {
-    gp << "set output " << gnuplot_quoted(png[static_cast<std::size_t>(fig)]) << "\nset multiplot layout 3,1 title "
-       << gnuplot_quoted(title + ": " + what[fig] + ", run 0") << " noenhanced\n";
-    for (int c = 0; c < 3; ++c) {
-      gp << "set ylabel " << gnuplot_quoted(std::string(kManoeuvringAxes[c]) + " " + what[fig]) << " noenhanced\n"
-         << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
-         << (c == 0 ? "set key outside right top\n" : "unset key\n");
+    const auto ylabel = [&](int c) { return std::string(kManoeuvringAxes[c]) + " " + what[fig]; };
+    const auto curves = [&](int c) {
+      std::ostringstream plot;
       const std::string t = fig == 2 ? "2" : "1";
       if (fig < 2) {
         const std::size_t e = base + static_cast<std::size_t>(3 * fig + c), s = base + 6 + static_cast<std::size_t>(3 * fig + c);
-        gp << "plot " << gnuplot_quoted(data) << " using " << t << ":" << e << " with lines lw 1 title 'error', "
-           << gnuplot_quoted(data) << " using " << t << ":(3*$" << s << ") with lines lc 'gray' title '+3 sigma', "
-           << gnuplot_quoted(data) << " using " << t << ":(-3*$" << s << ") with lines lc 'gray' notitle\n";
+        plot << gnuplot_quoted(data) << " using " << t << ":" << e << " with lines lw 1 title 'error', "
+             << gnuplot_quoted(data) << " using " << t << ":(3*$" << s << ") with lines lc 'gray' title '+3 sigma', "
+             << gnuplot_quoted(data) << " using " << t << ":(-3*$" << s << ") with lines lc 'gray' notitle";
       } else {
         const std::size_t e = base + 12 + static_cast<std::size_t>(c), sp = base + 15 + static_cast<std::size_t>(c),
                           si = base + 18 + static_cast<std::size_t>(c);
-        gp << "plot " << gnuplot_quoted(data) << " using 2:" << e << " with lines lw 1 title 'error', "
-           << gnuplot_quoted(data) << " using 2:(3*$" << si << ") with lines lc 'gray' title '3 sigma innovation', "
-           << gnuplot_quoted(data) << " using 2:(-3*$" << si << ") with lines lc 'gray' notitle, "
-           << gnuplot_quoted(data) << " using 2:(3*$" << sp << ") with lines lc 'orange' title '3 sigma (7b)', "
-           << gnuplot_quoted(data) << " using 2:(-3*$" << sp << ") with lines lc 'orange' notitle\n";
+        plot << gnuplot_quoted(data) << " using 2:" << e << " with lines lw 1 title 'error', "
+             << gnuplot_quoted(data) << " using 2:(3*$" << si << ") with lines lc 'gray' title '3 sigma innovation', "
+             << gnuplot_quoted(data) << " using 2:(-3*$" << si << ") with lines lc 'gray' notitle, "
+             << gnuplot_quoted(data) << " using 2:(3*$" << sp << ") with lines lc 'orange' title '3 sigma (7b)', "
+             << gnuplot_quoted(data) << " using 2:(-3*$" << sp << ") with lines lc 'orange' notitle";
       }
-    }
-    gp << "unset multiplot\n";
+      return plot.str();
+    };
+    gp << gnuplot_stacked_figure(png[static_cast<std::size_t>(fig)], title + ": " + what[fig] + ", run 0", 3, ylabel,
+                                 curves);
   }
 }
 
@@ -184,25 +183,24 @@ std::string plot_data(const std::vector<std::vector<ManoeuvringSample>>& samples
   return out;
 }
 
-}  // namespace
-
+// samples[f] = filter f's samples of run 0.
 std::string format_manoeuvring_trajectory_csv(const ManoeuvringExperiment& e,
                                               const std::vector<std::vector<ManoeuvringSample>>& samples) {
   std::string out = "t";
-  for (const char* n : kManoeuvringStateNames) out += std::string(",true_") + n;
+  append_columns(out, "true_", kManoeuvringStateNames);
   out += ",u_time";
-  for (const char* a : kManoeuvringAxes) out += std::string(",true_u") + a;
-  for (const char* a : kManoeuvringAxes) out += std::string(",uc_") + a;
-  for (const char* a : kManoeuvringAxes) out += std::string(",meas_") + a;
+  append_columns(out, "true_u", kManoeuvringAxes);
+  append_columns(out, "uc_", kManoeuvringAxes);
+  append_columns(out, "meas_", kManoeuvringAxes);
   out += ",range";
   for (const auto& f : e.filters) {
-    for (const char* n : kManoeuvringStateNames) out += "," + f.name + "_est_" + n;
-    for (const char* n : kManoeuvringStateNames) out += "," + f.name + "_sigma_" + n;
-    for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uhat_" + a;
+    append_columns(out, f.name + "_est_", kManoeuvringStateNames);
+    append_columns(out, f.name + "_sigma_", kManoeuvringStateNames);
+    append_columns(out, f.name + "_uhat_", kManoeuvringAxes);
     if (with_paper(f))
-      for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uvar_paper_" + a;
+      append_columns(out, f.name + "_uvar_paper_", kManoeuvringAxes);
     if (with_innovation(f))
-      for (const char* a : kManoeuvringAxes) out += "," + f.name + "_uvar_innov_" + a;
+      append_columns(out, f.name + "_uvar_innov_", kManoeuvringAxes);
     out += "," + f.name + "_nis," + f.name + "_window_nis," + f.name + "_alarm";
   }
   out += '\n';
@@ -210,21 +208,21 @@ std::string format_manoeuvring_trajectory_csv(const ManoeuvringExperiment& e,
   for (std::size_t k = 0; k < steps; ++k) {
     const ManoeuvringSample& s0 = samples.front()[k];
     append_num(out, s0.t);
-    for (int i = 0; i < 6; ++i) out += ',', append_num(out, s0.truth(i));
+    append_cells(out, s0.truth, 6);
     out += ',', append_num(out, s0.u_time);
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, s0.true_u(i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, s0.u_chaser(i));
-    for (int i = 0; i < 3; ++i) out += ',', append_num(out, s0.measured_position(i));
+    append_cells(out, s0.true_u, 3);
+    append_cells(out, s0.u_chaser, 3);
+    append_cells(out, s0.measured_position, 3);
     out += ',', append_num(out, s0.range);
     for (std::size_t f = 0; f < samples.size(); ++f) {
       const ManoeuvringSample& s = samples[f][k];
-      for (int i = 0; i < 6; ++i) out += ',', append_num(out, s.estimate(i));
-      for (int i = 0; i < 6; ++i) out += ',', append_num(out, s.sigma(i));
-      for (int i = 0; i < 3; ++i) out += ',', append_num(out, s.u_hat(i));
+      append_cells(out, s.estimate, 6);
+      append_cells(out, s.sigma, 6);
+      append_cells(out, s.u_hat, 3);
       if (with_paper(e.filters[f]))
-        for (int i = 0; i < 3; ++i) out += ',', append_num(out, s.u_var_paper(i));
+        append_cells(out, s.u_var_paper, 3);
       if (with_innovation(e.filters[f]))
-        for (int i = 0; i < 3; ++i) out += ',', append_num(out, s.u_var_innovation(i));
+        append_cells(out, s.u_var_innovation, 3);
       out += ',', append_num(out, s.nis);
       out += ',', append_num(out, s.window_nis);
       out += s.alarm ? ",1" : ",0";
@@ -234,6 +232,7 @@ std::string format_manoeuvring_trajectory_csv(const ManoeuvringExperiment& e,
   return out;
 }
 
+// stats[r][f] = filter f's statistics in run r.
 std::string format_manoeuvring_runs_csv(const ManoeuvringExperiment& e,
                                         const std::vector<std::vector<ManoeuvringFilterStatistics>>& stats,
                                         const std::vector<std::uint64_t>& seeds) {
@@ -288,6 +287,8 @@ std::string format_manoeuvring_summary_json(const ManoeuvringExperiment& e,
   return j.dump(2) + "\n";
 }
 
+// Per filter F: F_position_error.png, F_velocity_error.png, F_manoeuvre_error.png (run 0),
+// into temporaries of `outputs`. Throws PlotError (plots.hpp).
 void write_manoeuvring_plots(const std::string& dir, const ManoeuvringExperiment& e,
                              const std::vector<std::vector<ManoeuvringSample>>& samples, const std::string& title,
                              hinf::AtomicFileSet& outputs) {
@@ -312,4 +313,16 @@ void write_manoeuvring_plots(const std::string& dir, const ManoeuvringExperiment
   run_plot_script(script, png, names);
 }
 
+}  // namespace
+
+namespace families {
+
+const StreamOutputs<ManoeuvringExperiment, ManoeuvringFilterStatistics, ManoeuvringSample>& manoeuvring_outputs() {
+  static const StreamOutputs<ManoeuvringExperiment, ManoeuvringFilterStatistics, ManoeuvringSample> outputs{
+      format_manoeuvring_trajectory_csv, format_manoeuvring_runs_csv, format_manoeuvring_summary_json,
+      write_manoeuvring_plots};
+  return outputs;
+}
+
+}  // namespace families
 }  // namespace hinf::sim

@@ -1,5 +1,5 @@
-// format_gps_ins_* (gps_ins_report.hpp).
-#include "hinf/sim/gps_ins_report.hpp"
+// The output files of a gps_ins_relative run directory (gps_ins_report.hpp).
+#include "gps_ins_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -71,38 +71,35 @@ std::string plot_script(const GpsInsExperiment& e, const std::string& title, con
   gp << "set terminal pngcairo size 1000,900 enhanced font 'Sans,10'\nset grid\nset key outside right top\nset lmargin 12\nset rmargin 24\n";
   for (int fig = 0; fig < 4; ++fig) {
     const GpsInsFigure& F = kFigures[fig];
-    gp << "set output " << gnuplot_quoted(png[static_cast<std::size_t>(fig)]) << "\nset multiplot layout 3,1 title "
-       << gnuplot_quoted(title + ": " + F.quantity + ", run 0, steady-state window") << " noenhanced\n";
-    for (int c = 0; c < 3; ++c) {
-      gp << "set ylabel " << gnuplot_quoted(std::string(kErrorNames[F.first + c]) + " (" + F.unit + ")")
-         << " noenhanced\n" << (c == 2 ? "set xlabel 'time (s)'\n" : "unset xlabel\n")
-         << (c == 0 ? "set key outside right top\n" : "unset key\n") << "plot ";
+    const auto ylabel = [&](int c) { return std::string(kErrorNames[F.first + c]) + " (" + F.unit + ")"; };
+    const auto curves = [&](int c) {
+      std::ostringstream plot;
       for (std::size_t f = 0; f < e.filters.size(); ++f) {
         const std::size_t err_col = 2 + 24 * f + static_cast<std::size_t>(F.first + c), sig_col = err_col + 12;
         const std::string lc = " lc " + std::to_string(f + 1);
-        gp << (f ? ", " : "") << gnuplot_quoted(data) << " using 1:" << err_col << " with lines lw 1" << lc
-           << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced, '' using 1:" << sig_col
-           << " with lines dt 2" << lc << " title " << gnuplot_quoted(e.filters[f].name + " ±3σ")
-           << " noenhanced, '' using 1:(-$" << sig_col << ") with lines dt 2" << lc << " notitle";
+        plot << (f ? ", " : "") << gnuplot_quoted(data) << " using 1:" << err_col << " with lines lw 1" << lc
+             << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced, '' using 1:" << sig_col
+             << " with lines dt 2" << lc << " title " << gnuplot_quoted(e.filters[f].name + " ±3σ")
+             << " noenhanced, '' using 1:(-$" << sig_col << ") with lines dt 2" << lc << " notitle";
       }
-      gp << "\n";
-    }
-    gp << "unset multiplot\n";
+      return plot.str();
+    };
+    gp << gnuplot_stacked_figure(png[static_cast<std::size_t>(fig)],
+                                 title + ": " + F.quantity + ", run 0, steady-state window", 3, ylabel, curves);
   }
   gp << "set output\n";
   return gp.str();
 }
 
-}  // namespace
-
+// samples[f] = filter f's samples of run 0.
 std::string format_gps_ins_trajectory_csv(const GpsInsExperiment& e,
                                           const std::vector<std::vector<GpsInsSample>>& samples) {
   std::string out = "t";
-  for (const char* n : kStateNames) out += std::string(",truth_") + n;
+  append_columns(out, "truth_", kStateNames);
   for (const auto& f : e.filters) {
-    for (const char* n : kStateNames) out += "," + f.name + "_" + n;
-    for (const char* n : kErrorNames) out += "," + f.name + "_err_" + n;
-    for (const char* n : kErrorNames) out += "," + f.name + "_3sigma_" + n;
+    append_columns(out, f.name + "_", kStateNames);
+    append_columns(out, f.name + "_err_", kErrorNames);
+    append_columns(out, f.name + "_3sigma_", kErrorNames);
     out += "," + f.name + "_nees";
   }
   out += '\n';
@@ -113,9 +110,9 @@ std::string format_gps_ins_trajectory_csv(const GpsInsExperiment& e,
     for (const auto& filter : samples) {
       const GpsInsSample& s = filter[k];
       const auto err = error_in_report_units(s), sig = sigma_in_report_units(s);
-      for (int i = 0; i < 15; ++i) out += ',', append_num(out, s.estimate(i));
-      for (int i = 0; i < 15; ++i) out += ',', append_num(out, err(i));
-      for (int i = 0; i < 15; ++i) out += ',', append_num(out, 3 * sig(i));
+      append_cells(out, s.estimate, 15);
+      append_cells(out, err, 15);
+      append_cells(out, 3 * sig, 15);
       out += ',', append_num(out, s.nees);
     }
     out += '\n';
@@ -123,19 +120,11 @@ std::string format_gps_ins_trajectory_csv(const GpsInsExperiment& e,
   return out;
 }
 
+// stats[r][f] = filter f's window statistics in run r.
 std::string format_gps_ins_runs_csv(const GpsInsExperiment& e,
                                     const std::vector<std::vector<GpsInsFilterStatistics>>& stats,
                                     const std::vector<std::uint64_t>& seeds) {
-  std::string out = "run,seed,filter";
-  for (const auto& [name, value] : metric_list(GpsInsFilterStatistics())) out += std::string(",") + name;
-  out += '\n';
-  for (std::size_t r = 0; r < stats.size(); ++r)
-    for (std::size_t f = 0; f < e.filters.size(); ++f) {
-      out += std::to_string(r) + "," + std::to_string(seeds[r]) + "," + e.filters[f].name;
-      for (const auto& [name, value] : metric_list(stats[r][f])) out += ',', append_num(out, value);
-      out += '\n';
-    }
-  return out;
+  return metrics_runs_csv(e.filters, stats, seeds, [](const GpsInsFilterStatistics& s) { return metric_list(s); });
 }
 
 std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
@@ -147,8 +136,7 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
   j["inertia_products_fraction"] = json_num(e.scenario.inertia_products_fraction);
   Json filters = Json::object();
   for (std::size_t f = 0; f < e.filters.size(); ++f) {
-    std::vector<std::vector<std::pair<const char*, double>>> per_run;  // [run][metric]
-    for (const auto& run : stats) per_run.push_back(metric_list(run[f]));
+    const auto per_run = metrics_per_run(stats, f, [](const GpsInsFilterStatistics& s) { return metric_list(s); });
     Json m = Json::object();
     add_metrics_json(m, per_run);
     filters[e.filters[f].name] = m;
@@ -157,6 +145,30 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
   return j.dump(2) + "\n";
 }
 
+// Draws the source's Figs. 1–4 for run 0 over the steady-state window — DIR/fig1_position.png,
+// fig2_velocity.png, fig3_attitude.png, fig4_rate.png: each component's error and ±3σ per
+// filter — into temporaries of `outputs`. Throws PlotError (plots.hpp).
+void write_gps_ins_plots(const std::string& dir, const GpsInsExperiment& e,
+                         const std::vector<std::vector<GpsInsSample>>& samples, const std::string& title,
+                         hinf::AtomicFileSet& outputs) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> names, png;
+  for (const GpsInsFigure& F : kFigures) {
+    names.emplace_back(F.file);
+    png.push_back(outputs.reserve((fs::path(dir) / F.file).string()));
+  }
+  hinf::AtomicFileSet scratch;  // never committed: removed on return
+  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(e, samples));
+  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(e, title, data, png));
+  run_plot_script(script, png, names);
+}
+
+}  // namespace
+
+// campaigns[i][r][f] = filter f's statistics in run r of the campaign whose truth has the
+// products-of-inertia fraction fractions[i]. One row per fraction and filter: the median over
+// the runs of each axis's window maximum (attitude as 3-1-2 roll, pitch, yaw in deg; rate and
+// bias in deg/s), the layout of the source's Table 1, and the median of the runs' mean NEES.
 std::string format_gps_ins_table1_csv(const GpsInsExperiment& e, const std::vector<double>& fractions,
                                       const std::vector<std::vector<std::vector<GpsInsFilterStatistics>>>& campaigns) {
   std::string out =
@@ -183,19 +195,13 @@ std::string format_gps_ins_table1_csv(const GpsInsExperiment& e, const std::vect
   return out;
 }
 
-void write_gps_ins_plots(const std::string& dir, const GpsInsExperiment& e,
-                         const std::vector<std::vector<GpsInsSample>>& samples, const std::string& title,
-                         hinf::AtomicFileSet& outputs) {
-  namespace fs = std::filesystem;
-  std::vector<std::string> names, png;
-  for (const GpsInsFigure& F : kFigures) {
-    names.emplace_back(F.file);
-    png.push_back(outputs.reserve((fs::path(dir) / F.file).string()));
-  }
-  hinf::AtomicFileSet scratch;  // never committed: removed on return
-  const std::string data = scratch.add((fs::path(dir) / "plot.dat").string(), plot_data(e, samples));
-  const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), plot_script(e, title, data, png));
-  run_plot_script(script, png, names);
+namespace families {
+
+const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample>& gps_ins_outputs() {
+  static const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample> outputs{
+      format_gps_ins_trajectory_csv, format_gps_ins_runs_csv, format_gps_ins_summary_json, write_gps_ins_plots};
+  return outputs;
 }
 
+}  // namespace families
 }  // namespace hinf::sim

@@ -21,7 +21,6 @@ namespace {
 
 using hinf::models::kRadiansPerDegree;
 
-
 // `a` a whole multiple of `b` (to 1e-9 relative), as the run's timing requires.
 bool whole_multiple(double a, double b) {
   const double k = a / b;

@@ -1,0 +1,157 @@
+// One run of a linear_plant experiment and the predicted RMS (linear_plant_run.hpp,
+// docs/maths.md §33).
+#include "hinf/sim/linear_plant_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "hinf/runtime/lti_filter.hpp"
+#include "hinf/sim/rng.hpp"
+#include "hinf/sim/simulation_error.hpp"
+
+namespace hinf::sim {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+// The noise streams of a run, one per channel (docs/experiments.md "Reproducibility").
+enum Stream : std::uint64_t { kProcessStream = 0, kMeasurementStream = 1, kInitialStateStream = 2, kUncertaintyStream = 3 };
+
+// The doubling iteration for Σ = Ā Σ Āᵀ + Q stops when Ā^(2^i) is this small (in norm) …
+constexpr double kDoublingConverged = 1e-18;
+// … or after this many doublings (Ā^(2^64): ρ(Ā) within 2⁻⁶⁰ of 1 is not stationary in practice).
+constexpr int kMaxDoublings = 64;
+
+VectorXd normal_vector(Rng& rng, Eigen::Index size, double std) {
+  VectorXd v(size);
+  for (Eigen::Index i = 0; i < size; ++i) v(i) = std * rng.normal();
+  return v;
+}
+
+// Σ = Σ_i Āⁱ Q Āⁱᵀ by doubling (S ← S + M S Mᵀ, M ← M²); nullopt if M does not vanish.
+std::optional<MatrixXd> stationary_covariance(MatrixXd M, MatrixXd S) {
+  for (int i = 0; i < kMaxDoublings; ++i) {
+    S += M * S * M.transpose();
+    M = (M * M).eval();
+    if (!M.allFinite() || !S.allFinite()) return std::nullopt;
+    if (M.norm() < kDoublingConverged) return S;
+  }
+  return std::nullopt;
+}
+
+struct FilterRun {
+  std::unique_ptr<runtime::LtiFilter> filter;
+  double sum_squares = 0, max_error = 0;
+  long count = 0;
+  bool diverged = false;
+};
+
+}  // namespace
+
+int LinearPlantScenario::uncertainty_blocks() const {
+  return plant.uncertain() ? static_cast<int>(plant.F_block_ranges().size()) : 0;
+}
+
+MatrixXd LinearPlantScenario::truth_A(const VectorXd& delta) const {
+  if (!plant.uncertain()) return plant.A;
+  MatrixXd F = MatrixXd::Zero(plant.j(), plant.k());
+  Eigen::Index b = 0;
+  for (const auto& [at, size] : plant.F_block_ranges()) {  // structured: square blocks; else one j×k Ē
+    const Eigen::Index rows = plant.structured() ? size : plant.j(), cols = plant.structured() ? size : plant.k();
+    F.block(at, at, rows, cols) = delta(b++) * MatrixXd::Identity(rows, cols);
+  }
+  return plant.A + plant.H * F * plant.E;
+}
+
+namespace {
+
+// The run's δ per block: the scenario's one value, or each uniform on [−1, 1].
+VectorXd draw_delta(const LinearPlantScenario& s, std::uint64_t seed) {
+  VectorXd delta = VectorXd::Constant(s.uncertainty_blocks(), s.uncertainty_delta);
+  if (!s.random_uncertainty) return delta;
+  Rng rng(derive_seed(seed, kUncertaintyStream));
+  for (Eigen::Index b = 0; b < delta.size(); ++b) delta(b) = 2 * rng.uniform01() - 1;
+  return delta;
+}
+
+}  // namespace
+
+double predicted_error_rms(const LinearPlantScenario& s, const LtiGains& g, const VectorXd& delta) {
+  const Plant& P = s.plant;
+  const Eigen::Index n = P.n(), nf = g.A_F.rows(), p = P.p(), q = P.q();
+  const bool filtered = g.D_F.size() > 0;
+  // (228): ξ = [x; x_F], ξ(k+1) = Ā ξ + B̄ [w; v], e = C̄ ξ − D_F D v
+  MatrixXd A_bar = MatrixXd::Zero(n + nf, n + nf), B_bar = MatrixXd::Zero(n + nf, p + q);
+  A_bar.topLeftCorner(n, n) = s.truth_A(delta);
+  A_bar.bottomLeftCorner(nf, n) = g.B_F * P.C;
+  A_bar.bottomRightCorner(nf, nf) = g.A_F;
+  B_bar.topLeftCorner(n, p) = P.B;
+  B_bar.bottomRightCorner(nf, q) = g.B_F * P.D;
+  VectorXd noise(p + q);
+  noise << VectorXd::Constant(p, s.process_std * s.process_std), VectorXd::Constant(q, s.measurement_std * s.measurement_std);
+  const auto Sigma = stationary_covariance(A_bar, B_bar * noise.asDiagonal() * B_bar.transpose());
+  if (!Sigma) return std::numeric_limits<double>::quiet_NaN();
+  MatrixXd C_bar(P.l(), n + nf);
+  C_bar << (filtered ? MatrixXd(P.L - g.D_F * P.C) : P.L), -g.C_F;
+  double mean_square = (C_bar * *Sigma * C_bar.transpose()).trace();  // (229)
+  if (filtered) mean_square += s.measurement_std * s.measurement_std * (g.D_F * P.D).squaredNorm();
+  return std::sqrt(mean_square);
+}
+
+std::vector<LinearPlantStatistics> run_linear_plant(const LinearPlantScenario& s,
+                                                    const std::vector<LinearPlantFilter>& filters,
+                                                    const LinearPlantRunOptions& o, std::uint64_t seed) {
+  const Plant& P = s.plant;
+  const VectorXd delta = draw_delta(s, seed);
+  const MatrixXd A = s.truth_A(delta);
+  Rng process(derive_seed(seed, kProcessStream)), measurement(derive_seed(seed, kMeasurementStream));
+  Rng initial(derive_seed(seed, kInitialStateStream));
+  VectorXd x = normal_vector(initial, P.n(), s.initial_state_std);
+  std::vector<FilterRun> runs(filters.size());
+  for (std::size_t f = 0; f < filters.size(); ++f) {
+    const LtiGains& g = filters[f].gains;
+    runs[f].filter = std::make_unique<runtime::LtiFilter>(g.A_F, g.B_F, g.C_F, MatrixXd::Zero(g.A_F.rows(), 0),
+                                                          g.D_F.size() > 0 ? g.D_F : MatrixXd(0, 0));
+  }
+  const long samples = std::lround(s.duration / s.sample_time);
+  LinearPlantSample sample;
+  for (long k = 0; k <= samples; ++k) {
+    const double t = static_cast<double>(k) * s.sample_time;
+    require_finite_truth("linear_plant", k, t, x, {{"x", 0, P.n()}});
+    const VectorXd y = P.C * x + P.D * normal_vector(measurement, P.q(), s.measurement_std);
+    const VectorXd z = P.L * x;
+    for (std::size_t f = 0; f < filters.size(); ++f) {
+      FilterRun& r = runs[f];
+      const VectorXd& z_hat = r.filter->step(y);
+      const double error = (z - z_hat).norm();
+      if (!r.diverged && !std::isfinite(error)) r.diverged = true;
+      if (!r.diverged && t >= o.window_start) {
+        r.sum_squares += error * error;
+        r.max_error = std::max(r.max_error, error);
+        ++r.count;
+      }
+      if (o.on_sample) {
+        sample.t = t;
+        sample.z = z;
+        sample.z_hat = z_hat;
+        o.on_sample(static_cast<int>(f), sample);
+      }
+    }
+    x = A * x + P.B * normal_vector(process, P.p(), s.process_std);
+  }
+  std::vector<LinearPlantStatistics> out(filters.size());
+  for (std::size_t f = 0; f < filters.size(); ++f) {
+    out[f].delta = delta;
+    out[f].predicted_rms = predicted_error_rms(s, filters[f].gains, delta);
+    out[f].diverged = runs[f].diverged;
+    if (runs[f].diverged || runs[f].count == 0) continue;
+    out[f].error_rms = std::sqrt(runs[f].sum_squares / static_cast<double>(runs[f].count));
+    out[f].error_max = runs[f].max_error;
+  }
+  return out;
+}
+
+}  // namespace hinf::sim
