@@ -1,4 +1,4 @@
-// hinf-sim SCENARIO.yaml --out DIR [--runs N] [--seed S] [--jobs J] [--format csv|mat] [--json]
+// hinf-sim SCENARIO.yaml -o DIR [--runs N] [--seed S] [--jobs J] [--format csv|mat] [--json]
 // Exit codes: 0 ok, 2 invalid input or unwritable output, 3 infeasible synthesis,
 // 4 numerical failure (synthesis certificate, non-finite truth).
 #include <CLI/CLI.hpp>
@@ -52,7 +52,8 @@ const CLI::Validator kWholeNumber(
 
 void add_options(CLI::App& app, Options& o) {
   app.add_option("scenario", o.scenario_path, "scenario file (YAML)")->required();
-  app.add_option("-o,--output,--out", o.out_dir, "output directory (created if missing)")->required();
+  auto* output = app.add_option("-o,--output", o.out_dir, "output directory (created if missing)");
+  app.add_option("--out", o.old_out_dir, "the older spelling of -o/--output")->group("")->excludes(output);
   app.add_option("--runs", o.runs, "Monte-Carlo runs (run i uses the seed derived from (seed, i))")
       ->check(CLI::Range(1L, 1000000L));
   app.add_option("--seed", o.seed, "base seed, a whole number in [0, 2^64 - 1]")->check(kWholeNumber);
@@ -131,6 +132,14 @@ int run(int argc, char** argv) {
     std::cerr << "hinf-sim: error: " << e.what() << " (hinf-sim --help)\n";
     return kExitInvalid;
   }
+  if (!o.old_out_dir.empty()) {
+    o.out_dir = o.old_out_dir;
+    std::cerr << "hinf-sim: note: --out is the older spelling of -o/--output; it will go in a later version\n";
+  }
+  if (o.out_dir.empty()) {
+    std::cerr << "hinf-sim: error: --output is required (hinf-sim --help)\n";
+    return kExitInvalid;
+  }
 
   const auto fail = [](const std::string& what, hinf::ErrorCode code) {
     std::cerr << "hinf-sim: error: " << what << "\n";
@@ -144,6 +153,7 @@ int run(int argc, char** argv) {
   request.duration = o.duration;
   request.log = hinf::sim_cli::status_log(o.verbose);
   request.progress = hinf::sim_cli::progress_bar(!o.quiet && o.runs > 1);
+  if (!o.quiet) request.on_campaign = [](const std::string& label) { std::cerr << "hinf-sim: " << label << "\n"; };
   hinf::sim::CampaignResult result;
   try {  // the scenario read once; its family (sim/family.hpp) runs the campaign in memory
     request.scenario_text = hinf::read_input_file(o.scenario_path, "scenario", hinf::kMaxScenarioBytes);

@@ -12,6 +12,7 @@ namespace hinf::sim_cli {
 
 struct Options {
   std::string scenario_path, out_dir;
+  std::string old_out_dir;  // --out, the older spelling of -o/--output (docs/cli.md)
   long runs = 1;
   std::uint64_t seed = 1;
   int jobs = 1;

@@ -49,6 +49,20 @@ void add_quiet_flag(CLI::App& cmd, bool& quiet) {
   cmd.add_flag("-q,--quiet", quiet, "no report on success (errors and --json are still printed)");
 }
 
+void Stages::line(const std::string& text) const {
+  if (enabled_) std::cerr << "hinf-synth: " << subcommand_ << ": " << text << std::endl;
+}
+
+void Stages::log(const std::string& stage, std::chrono::steady_clock::time_point start) const {
+  if (!enabled_) return;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  line(stage + " (" + significant_text(s, 3) + " s)");
+}
+
+void add_verbose_flag(CLI::App& cmd, bool& verbose, const std::string& what) {
+  cmd.add_flag("-v,--verbose", verbose, what);
+}
+
 synth::JobObservers verbose_observers(bool enabled, std::optional<VerboseLog>& log) {
   synth::JobObservers observers;
   if (!enabled) return observers;

@@ -2,12 +2,15 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <functional>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "hinf/synth/api.hpp"
@@ -47,6 +50,36 @@ std::ostream& report_stream(const std::string& output);
 void require_one_use_of_stdout(const std::string& output, bool json);
 // -q/--quiet on a subcommand: no report on success (errors and --json are still printed).
 void add_quiet_flag(CLI::App& cmd, bool& quiet);
+// -v/--verbose on the subcommands that run no synthesis (docs/cli.md): each stage on stderr as
+// it ends, with its wall time ("hinf-synth: verify: read configs/x.yaml (0.004 s)"); silent
+// when not enabled.
+class Stages {
+ public:
+  Stages(bool enabled, std::string subcommand) : enabled_(enabled), subcommand_(std::move(subcommand)) {}
+  // f() timed and logged as `stage`; its result returned.
+  template <class F>
+  auto operator()(const std::string& stage, F&& f) const {
+    const auto start = std::chrono::steady_clock::now();
+    if constexpr (std::is_void_v<decltype(f())>) {
+      f();
+      log(stage, start);
+    } else {
+      auto result = f();
+      log(stage, start);
+      return result;
+    }
+  }
+  // One line without a time (a sweep's point).
+  void line(const std::string& text) const;
+  bool enabled() const { return enabled_; }
+
+ private:
+  void log(const std::string& stage, std::chrono::steady_clock::time_point start) const;
+  bool enabled_;
+  std::string subcommand_;
+};
+// -v/--verbose, `what` it prints.
+void add_verbose_flag(CLI::App& cmd, bool& verbose, const std::string& what = "each stage and its wall time on stderr");
 // -v: the verbose account of a synthesis (coefficient ranges, sizes, the iteration table) on
 // stderr through `log`, which must outlive the observers; none when `enabled` is false.
 synth::JobObservers verbose_observers(bool enabled, std::optional<VerboseLog>& log);

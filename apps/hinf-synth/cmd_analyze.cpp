@@ -13,14 +13,19 @@ void add_analyze(CLI::App& app, Action& action) {
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML");
   auto json = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
+  auto verbose = std::make_shared<bool>(false);
   auto points = std::make_shared<int>(41);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.analyze/1) instead of text");
   add_quiet_flag(*cmd, *quiet);
+  add_verbose_flag(*cmd, *verbose);
   cmd->add_option("--delta-points", *points, "grid points over [-delta_bar, delta_bar] (hill configs)")
       ->check(CLI::Range(2, 100001));
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::AnalysisOutcome a = synth::load_problem(args->config)->analyze(args->gains, {*points});
+      const Stages stage(*verbose, "analyze");
+      const auto problem = stage("read " + args->config, [&] { return synth::load_problem(args->config); });
+      const synth::AnalysisOutcome a =
+          stage("analysed " + args->gains, [&] { return problem->analyze(args->gains, {*points}); });
       if (*json)
         print_json(a.json);
       else if (!*quiet)

@@ -28,7 +28,7 @@ void add_check(CLI::App& app, Action& action) {
       ->check(CLI::Range(1e-14, 1.0));
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.check/1) instead of text");
   add_quiet_flag(*cmd, *quiet);
-  cmd->add_flag("-v,--verbose", *verbose, "the re-synthesis's iteration table on stderr");
+  add_verbose_flag(*cmd, *verbose, "the re-synthesis's iteration table on stderr");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);

@@ -24,11 +24,13 @@ void add_codegen(CLI::App& app, Action& action) {
     std::string gains;
     std::string prefix;
     std::string out;
+    std::string old_out;  // --out, the older spelling of -o/--output (docs/cli.md)
     std::string real = "double";
     int vector_steps = 50;
     std::optional<double> tustin;  // s; a continuous-time controller discretised at this period
     bool json = false;
     bool quiet = false;
+    bool verbose = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -37,8 +39,8 @@ void add_codegen(CLI::App& app, Action& action) {
   cmd->add_option("--prefix", args->prefix,
                   "Symbol and file prefix, a C identifier (e.g. nav_filter)")
       ->required();
-  cmd->add_option("-o,--output,--out", args->out, "Output directory (created if missing; --out: the old spelling)")
-      ->required();
+  auto* output = cmd->add_option("-o,--output", args->out, "Output directory (created if missing)");
+  cmd->add_option("--out", args->old_out, "the older spelling of -o/--output")->group("")->excludes(output);
   cmd->add_option("--real", args->real, "Arithmetic type of the generated code")
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
@@ -50,8 +52,14 @@ void add_codegen(CLI::App& app, Action& action) {
                   "Period (s) at which a continuous-time controller file is discretised by Tustin's rule "
                   "(docs/maths.md (161))");
   add_quiet_flag(*cmd, args->quiet);
+  add_verbose_flag(*cmd, args->verbose);
   cmd->add_flag("--json", args->json, "print JSON (schema hinf-synth.codegen/1: the files written) instead of text");
   cmd->callback([args, &action] {
+    if (!args->old_out.empty()) {
+      args->out = args->old_out;
+      std::cerr << "hinf-synth: note: --out is the older spelling of -o/--output; it will go in a later version\n";
+    }
+    if (args->out.empty()) throw CLI::RequiredError("--output");
     action = [args]() -> int {
       hinf::codegen::CodegenOptions options;
       options.prefix = args->prefix;
@@ -61,9 +69,14 @@ void add_codegen(CLI::App& app, Action& action) {
       options.vector_steps = args->vector_steps;
       options.tustin_period = args->tustin;
       hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
-      const std::string text = hinf::read_input_file(args->gains, "gains or controller file", hinf::kMaxGainsBytes);
-      const hinf::codegen::GeneratedFiles files = hinf::codegen::generate_c_for_file(text, args->gains, options);
-      hinf::codegen::write_generated_files(files, args->out, {args->gains});
+      const Stages stage(args->verbose, "codegen");
+      const std::string text = stage("read " + args->gains, [&] {
+        return hinf::read_input_file(args->gains, "gains or controller file", hinf::kMaxGainsBytes);
+      });
+      const hinf::codegen::GeneratedFiles files = stage("C generated and its test vectors computed", [&] {
+        return hinf::codegen::generate_c_for_file(text, args->gains, options);
+      });
+      stage("wrote " + args->out, [&] { hinf::codegen::write_generated_files(files, args->out, {args->gains}); });
       Json written = Json::array();
       for (const auto& f : files.files) {
         const std::string path = (std::filesystem::path(args->out) / f.name).lexically_normal().string();

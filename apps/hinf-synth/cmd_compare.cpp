@@ -88,8 +88,10 @@ void add_compare(CLI::App& app, Action& action) {
   auto points = std::make_shared<int>(400);
   auto json = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
+  auto verbose = std::make_shared<bool>(false);
   cmd->add_option("-o,--output", *csv, "CSV: theta_rad_per_sample, frequency_hz, sigma_filter, sigma_kalman (- for stdout)");
   add_quiet_flag(*cmd, *quiet);
+  add_verbose_flag(*cmd, *verbose);
   cmd->add_option("--plot", *plot, "PNG of both sigma curves (gnuplot)");
   cmd->add_option("--points", *points, "log-spaced frequencies (default 400; both peaks are added)")
       ->check(CLI::Range(2, synth::kMaxComparisonPoints));
@@ -97,9 +99,12 @@ void add_compare(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=]() -> int {
       require_one_use_of_stdout(*csv, *json);
-      const synth::ConfigAndFilter in = synth::load_config_and_filter(args->config, args->gains);
-      const synth::Comparison c = synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points,
-                                                                 in.config.kalman_noise);
+      const Stages stage(*verbose, "compare");
+      const synth::ConfigAndFilter in = stage("read " + args->config + " and " + args->gains,
+                                              [&] { return synth::load_config_and_filter(args->config, args->gains); });
+      const synth::Comparison c = stage("both filters' figures and sigma curves computed", [&] {
+        return synth::compare_with_kalman(in.config.plant, in.filter, in.config.settings, *points, in.config.kalman_noise);
+      });
       const std::optional<double> T = in.config.sample_time();
       if (*json) {
         print_json(comparison_json(args->config, args->gains, c, T, in.filter.filtered()));
@@ -111,13 +116,14 @@ void add_compare(CLI::App& app, Action& action) {
         std::fflush(out);
       }
       const std::string data = sigma_csv(c, T);
-      if (!csv->empty()) write_output(*csv, data, {args->config, args->gains});
+      if (!csv->empty()) stage("wrote " + *csv, [&] { write_output(*csv, data, {args->config, args->gains}); });
       if (!plot->empty())
-        write_png_by_gnuplot(
-            *plot, data,
-            [&](const std::string& d, const std::string& png) { return sigma_plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
-            },
-            {args->config, args->gains});
+        stage("drew " + *plot, [&] {
+          const auto script = [&](const std::string& d, const std::string& png) {
+            return sigma_plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
+          };
+          write_png_by_gnuplot(*plot, data, script, {args->config, args->gains});
+        });
       return 0;
     };
   });

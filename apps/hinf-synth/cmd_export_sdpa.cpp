@@ -15,16 +15,20 @@ void add_export_sdpa(CLI::App& app, Action& action) {
   auto output = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
+  auto verbose = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML")->required();
   cmd->add_option("-o,--output", *output, "SDPA sparse file (.dat-s) to write (- for stdout)")->required();
   add_quiet_flag(*cmd, *quiet);
+  add_verbose_flag(*cmd, *verbose);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.export-sdpa/1: what was written) instead of text");
   cmd->callback([=, &action] {
     action = [=]() -> int {
       require_one_use_of_stdout(*output, *json);
-      const std::unique_ptr<synth::Problem> problem = synth::load_problem(*config);
-      const std::string sdpa = problem->export_sdpa();
-      write_output(*output, sdpa, {*config});
+      const Stages stage(*verbose, "export-sdpa");
+      const std::unique_ptr<synth::Problem> problem =
+          stage("read " + *config, [&] { return synth::load_problem(*config); });
+      const std::string sdpa = stage("LMI written in SDPA form", [&] { return problem->export_sdpa(); });
+      stage("wrote " + *output, [&] { write_output(*output, sdpa, {*config}); });
       if (*json) {
         Json j;
         j["schema"] = synth::json_schema("export-sdpa");

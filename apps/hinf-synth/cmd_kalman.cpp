@@ -23,10 +23,14 @@ void add_kalman(CLI::App& app, Action& action) {
   add_format_option(*cmd, *format);
   auto quiet = std::make_shared<bool>(false);
   add_quiet_flag(*cmd, *quiet);
+  auto verbose = std::make_shared<bool>(false);
+  add_verbose_flag(*cmd, *verbose);
   cmd->callback([=, &action] {
     action = [=]() -> int {
       require_one_use_of_stdout(*output, *json);
-      const synth::SolveOutcome r = synth::load_problem(*config)->kalman();
+      const Stages stage(*verbose, "kalman");
+      const auto problem = stage("read " + *config, [&] { return synth::load_problem(*config); });
+      const synth::SolveOutcome r = stage("Kalman gains computed and certified", [&] { return problem->kalman(); });
       deliver_solved(r, *output, *format, *config, *json, *quiet);
       return 0;
     };

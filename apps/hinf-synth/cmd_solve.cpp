@@ -19,7 +19,7 @@ void add_solve(CLI::App& app, Action& action) {
   auto json = std::make_shared<bool>(false);
   cmd->add_option("config", *config, "config YAML (system matrices, hill model, or controller)")->required();
   cmd->add_option("-o,--output", *output, "gains or controller YAML to write (atomically; - for stdout)")->required();
-  cmd->add_flag("-v,--verbose", *verbose, "coefficient ranges and the solver's iteration table on stderr");
+  add_verbose_flag(*cmd, *verbose, "coefficient ranges and the solver's iteration table on stderr");
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.solve/1: gamma and the written file's contents) instead of text");
   auto format = std::make_shared<std::string>();
   add_format_option(*cmd, *format);

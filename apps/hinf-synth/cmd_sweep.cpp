@@ -21,6 +21,7 @@ struct SweepArgs {
   std::string config, param, max_feasible, csv, json, plot;
   double tolerance = 1e-3;
   bool quiet = false;
+  bool verbose = false;  // each point on stderr as it ends, with its time
 };
 
 // The text report's stream: stdout, stderr when the CSV or the JSON goes to stdout (-o -,
@@ -100,15 +101,24 @@ double plot_floor(const std::vector<synth::SweepPoint>& points) {
   return floor > 0 ? floor : 1.0;
 }
 
+std::string point_text(const std::string& name, const synth::SweepPoint& p) {
+  std::string out = name + " = " + num(p.value) + ": ";
+  if (p.outcome == ErrorCode::Ok)
+    return out + "gamma = " + num(p.gamma) + " certified (" + p.form + " form)" +
+           (p.gap_certified ? ", gamma* >= " + num(p.gamma_lower) : std::string());
+  return out + synth::sweep_outcome_word(p.outcome) + " (exit " + std::to_string(exit_code(p.outcome)) + "): " + p.message;
+}
+
 void print_points(std::ostream& out, const std::string& name, const std::vector<synth::SweepPoint>& points) {
-  for (const auto& p : points) {
-    out << name << " = " << num(p.value) << ": ";
-    if (p.outcome == ErrorCode::Ok)
-      out << "gamma = " << num(p.gamma) << " certified (" << p.form << " form)"
-                << (p.gap_certified ? ", gamma* >= " + num(p.gamma_lower) : std::string()) << "\n";
-    else
-      out << synth::sweep_outcome_word(p.outcome) << " (exit " << exit_code(p.outcome) << "): " << p.message << "\n";
-  }
+  for (const auto& p : points) out << point_text(name, p) << "\n";
+}
+
+// -v: each point on stderr as it ends.
+synth::SweepPointObserver verbose_points(const SweepArgs& a, const std::string& name) {
+  if (!a.verbose) return nullptr;
+  return [name](const synth::SweepPoint& p) {
+    Stages(true, "sweep").line(point_text(name, p) + " (" + num(p.time_s) + " s)");
+  };
 }
 
 int run_sweep(const SweepArgs& a, const std::string& text) {
@@ -117,7 +127,8 @@ int run_sweep(const SweepArgs& a, const std::string& text) {
   const std::string& range = name_range.second;
   const std::vector<double> values = synth::parse_sweep_range(range, "--param");
   const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
-  const std::vector<synth::SweepPoint> points = synth::sweep(parameter, values, text, a.config);
+  const std::vector<synth::SweepPoint> points =
+      synth::sweep(parameter, values, text, a.config, nullptr, verbose_points(a, name));
   print_points(report(a), name, points);
   const std::string csv = sweep_csv(name, points);
   if (!a.csv.empty()) write_output(a.csv, csv, {a.config});
@@ -146,7 +157,8 @@ int run_max_feasible(const SweepArgs& a, const std::string& text) {
   const double lo = synth::parse_sweep_range(range.substr(0, colon), "--max-feasible").front();
   const double hi = synth::parse_sweep_range(range.substr(colon + 1), "--max-feasible").front();
   const synth::SweepParameter parameter = synth::resolve_sweep_parameter(name, text, a.config);
-  const synth::FeasibilitySearch s = synth::max_feasible(parameter, lo, hi, a.tolerance, text, a.config);
+  const synth::FeasibilitySearch s =
+      synth::max_feasible(parameter, lo, hi, a.tolerance, text, a.config, nullptr, verbose_points(a, name));
   print_points(report(a), name, s.evaluated);
   const synth::SweepPoint& best = s.largest_certified;
   report(a) << "largest certified " << name << " = " << num(best.value) << " (gamma = " << num(best.gamma) << ")";
@@ -193,13 +205,16 @@ void add_sweep(CLI::App& app, Action& action) {
   auto a = std::make_shared<SweepArgs>();
   cmd->add_option("config", a->config, "config YAML")->required();
   auto* param = cmd->add_option("--param", a->param,
-                                "NAME=LO:STEP:HI: NAME is delta_bar (hill.delta_bar), uncertainty_scale (E multiplied "
-                                "by the value) or a key path of the config holding a number, e.g. hill.sample_time");
+                                "NAME=LO:STEP:HI: NAME is a named parameter of the config (its design point, in its "
+                                "units; its range moves along), delta_bar (hill.delta_bar), uncertainty_scale (E "
+                                "multiplied by the value) or a key path of the config holding a number, e.g. "
+                                "hill.sample_time");
   auto* maxf = cmd->add_option("--max-feasible", a->max_feasible, "NAME=LO:HI: the largest certified value in [LO, HI]");
   param->excludes(maxf);
   cmd->add_option("--tolerance", a->tolerance, "--max-feasible: width of the final bracket (default 1e-3)");
   cmd->add_option("-o,--output", a->csv, "CSV of every point (parameter, value, outcome, exit_code, gamma, ...; - for stdout)");
   add_quiet_flag(*cmd, a->quiet);
+  add_verbose_flag(*cmd, a->verbose, "each point on stderr as it ends, with its wall time");
   cmd->add_option("--json", a->json, "the same as JSON, to this file (- for stdout)");
   cmd->add_option("--plot", a->plot, "PNG of gamma against the parameter (--param; gnuplot)");
   cmd->callback([a, &action] {

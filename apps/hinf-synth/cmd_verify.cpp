@@ -13,11 +13,16 @@ void add_verify(CLI::App& app, Action& action) {
   const auto args = add_config_gains_args(*cmd, "gains or controller YAML (must state gamma)");
   auto json = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
+  auto verbose = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json, "print JSON (schema hinf-synth.verify/1) instead of text");
   add_quiet_flag(*cmd, *quiet);
+  add_verbose_flag(*cmd, *verbose);
   cmd->callback([=, &action] {
     action = [=]() -> int {
-      const synth::VerifyOutcome v = synth::load_problem(args->config)->verify(args->gains);
+      const Stages stage(*verbose, "verify");
+      const auto problem = stage("read " + args->config, [&] { return synth::load_problem(args->config); });
+      const synth::VerifyOutcome v =
+          stage("certificate of " + args->gains + " re-derived", [&] { return problem->verify(args->gains); });
       if (*json)
         print_json(v.json);
       else if (!*quiet)

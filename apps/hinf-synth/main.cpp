@@ -22,12 +22,13 @@ constexpr const char* kExitCodes =
     "Exit codes: 0 ok, 1 a check failed (verify, check), 2 invalid input (the key, dimension or value is named), "
     "3 infeasible or ill-posed (with its certificate), 4 numerical failure. Conventions: docs/cli.md.";
 
-// One worked example per subcommand, shown at the end of its --help.
+// One worked example per subcommand, shown at the end of its --help; each runs as written
+// from the source tree after a build (tests/docs/documented_examples.py runs them).
 const char* example_of(const std::string& name) {
-  if (name == "solve") return "hinf-synth solve configs/paper-dbar0.05.yaml -o gains.yaml   (-v: iteration table; --json)";
+  if (name == "solve") return "hinf-synth solve configs/paper-dbar0.05.yaml -o gains.yaml   # -v: iteration table; --json";
   if (name == "kalman") return "hinf-synth kalman configs/paper-dbar0.05.yaml -o kalman.yaml";
   if (name == "analyze") return "hinf-synth analyze configs/paper-dbar0.05.yaml configs/paper-published-gains.yaml --json";
-  if (name == "export-sdpa") return "hinf-synth export-sdpa configs/paper-dbar0.05.yaml -o paper.dat-s && csdp paper.dat-s";
+  if (name == "export-sdpa") return "hinf-synth export-sdpa configs/paper-dbar0.05.yaml -o paper.dat-s   # then: csdp paper.dat-s";
   if (name == "verify") return "hinf-synth verify configs/paper-dbar0.05.yaml gains.yaml";
   if (name == "check") return "hinf-synth check configs/paper-dbar0.05.yaml --golden tests/golden/paper-dbar0.05.yaml";
   if (name == "codegen") return "hinf-synth codegen gains.yaml --prefix nav -o generated/";

@@ -2,7 +2,9 @@
 // (docs/maths.md §24).
 #include "hinf/certify/worst_case.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "admissible_f.hpp"
 #include "gaussian_source.hpp"
@@ -20,6 +22,11 @@ constexpr double kWorstCaseNormTolerance = 1e-8;
 constexpr double kInitialStep = 0.5;
 constexpr int kMissesPerHalving = 8;
 constexpr int kTrials = 200;
+// Compass search over a box: first step a quarter of each scalar's width, stopped below
+// kSmallestBoxStep of it or after kBoxTrials norms of its own.
+constexpr double kFirstBoxStep = 0.25;
+constexpr double kSmallestBoxStep = 1e-4;
+constexpr int kBoxTrials = 400;
 
 // σ_max at the peak of the error system at F; +inf if it is not Schur stable.
 double gain_at(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& F, int& evaluations) {
@@ -29,7 +36,73 @@ double gain_at(const Plant& plant, const Filter& filter, const Eigen::MatrixXd& 
   return discrete_hinf_norm(es, kWorstCaseNormTolerance).lower_bound;
 }
 
+// The radical inverse of i in base b (the Halton sequence's coordinate b), in [0, 1).
+double radical_inverse(unsigned long i, unsigned b) {
+  double x = 0, f = 1.0 / b;
+  for (; i > 0; i /= b, f /= b) x += f * static_cast<double>(i % b);
+  return x;
+}
+
+Eigen::MatrixXd diagonal_of_scalars(const std::vector<int>& sizes, const Eigen::VectorXd& delta) {
+  Eigen::Index j = 0;
+  for (int s : sizes) j += s;
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(j, j);
+  Eigen::Index at = 0;
+  for (std::size_t b = 0; b < sizes.size(); ++b) {
+    F.block(at, at, sizes[b], sizes[b]).diagonal().setConstant(delta(static_cast<Eigen::Index>(b)));
+    at += sizes[b];
+  }
+  return F;
+}
+
 }  // namespace
+
+WorstCaseOverBox worst_case_gain_over_box(const Plant& plant, const Filter& filter, const std::vector<int>& sizes,
+                                          const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, int samples) {
+  static constexpr unsigned kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+  const Eigen::Index K = lower.size();
+  WorstCaseOverBox out;
+  out.gain = -1;
+  out.delta = Eigen::VectorXd::Zero(K);
+  const auto try_at = [&](const Eigen::VectorXd& delta) {  // true if δ is the new worst
+    const double g = gain_at(plant, filter, diagonal_of_scalars(sizes, delta), out.evaluations);
+    if (!(g > out.gain)) return false;
+    out.gain = g, out.delta = delta;
+    return true;
+  };
+  const Eigen::VectorXd width = upper - lower;
+  std::vector<Eigen::VectorXd> candidates{Eigen::VectorXd::Zero(K).cwiseMax(lower).cwiseMin(upper)};
+  if (K <= kMaxBoxVertexDimension)
+    for (unsigned long v = 0; v < (1ul << K); ++v) {
+      Eigen::VectorXd d(K);
+      for (Eigen::Index b = 0; b < K; ++b) d(b) = (v >> b) & 1ul ? upper(b) : lower(b);
+      candidates.push_back(d);
+    }
+  for (int i = 1; i <= samples && K <= static_cast<Eigen::Index>(std::size(kPrimes)); ++i) {
+    Eigen::VectorXd d(K);
+    for (Eigen::Index b = 0; b < K; ++b) d(b) = lower(b) + width(b) * radical_inverse(static_cast<unsigned long>(i), kPrimes[b]);
+    candidates.push_back(d);
+  }
+  for (const Eigen::VectorXd& d : candidates)
+    if (try_at(d) && std::isinf(out.gain)) return out;
+  const int budget = out.evaluations + kBoxTrials;
+  for (double step = kFirstBoxStep; step >= kSmallestBoxStep && out.evaluations < budget;) {
+    bool gained = false;
+    for (Eigen::Index b = 0; b < K && !gained; ++b)
+      for (double sign : {1.0, -1.0}) {
+        Eigen::VectorXd d = out.delta;
+        d(b) = std::clamp(d(b) + sign * step * width(b), lower(b), upper(b));
+        if (d(b) == out.delta(b)) continue;
+        if (try_at(d)) {
+          if (std::isinf(out.gain)) return out;
+          gained = true;
+          break;
+        }
+      }
+    if (!gained) step /= 2;
+  }
+  return out;
+}
 
 WorstCaseGain worst_case_gain(const Plant& plant, const Filter& filter, int random_samples, unsigned seed) {
   WorstCaseGain out;

@@ -119,6 +119,14 @@ std::string metrics_runs_csv(const Filters& filters, const std::vector<std::vect
   return out;
 }
 
+// metrics_runs_csv as a StreamOutputs::runs_csv entry, for a family whose metric list needs
+// only the statistics: `metrics_runs_csv_of<&metric_list, Experiment, Stats>`.
+template <auto Metrics, class Experiment, class Stats>
+std::string metrics_runs_csv_of(const Experiment& e, const std::vector<std::vector<Stats>>& stats,
+                                const std::vector<std::uint64_t>& seeds) {
+  return metrics_runs_csv(e.filters, stats, seeds, Metrics);
+}
+
 // The keys every summary.json starts with.
 inline Json summary_header(const std::string& scenario_path, std::uint64_t seed, std::size_t runs, double duration) {
   Json j = Json::object();

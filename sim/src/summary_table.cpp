@@ -13,7 +13,13 @@ namespace {
 // The metrics shown per row: the first numeric ones of the family's summary.
 constexpr std::size_t kTableMetrics = 3;
 
-bool is_metric(const Json& v) { return (v.is_number() && !v.is_boolean()) || (v.is_object() && v.contains("mean")); }
+// A number, or the statistics of one over the runs (stats_json: a numeric mean and std); not a
+// list of them (the manoeuvring family's settling times per manoeuvre), not a setting's text.
+bool is_metric(const Json& v) {
+  if (v.is_object())
+    return v.contains("mean") && v["mean"].is_number() && v.contains("std") && v["std"].is_number();
+  return v.is_number() && !v.is_boolean();
+}
 
 std::string cell(const Json& v) {
   char buf[64];

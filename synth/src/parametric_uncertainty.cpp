@@ -62,7 +62,9 @@ UncertaintyFactors uncertainty_from_parameters(const std::vector<Eigen::MatrixXd
     f.H.middleCols(at, Hs[i].cols()) = Hs[i];
     f.E.middleRows(at, Es[i].rows()) = Es[i];
     at += Hs[i].cols();
-    if (Hs[i].cols() > 0) f.blocks.push_back(static_cast<int>(Hs[i].cols()));
+    if (Hs[i].cols() == 0) continue;
+    f.blocks.push_back(static_cast<int>(Hs[i].cols()));
+    f.parameter_blocks.push_back({parameters[i], static_cast<int>(Hs[i].cols())});
   }
   if (f.blocks.size() < 2) f.blocks.clear();  // one block: F full
   return f;

@@ -2,11 +2,13 @@
 // (docs/maths.md §21).
 #include "hinf/synth/sweep.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <cmath>
 
 #include "hinf/common/number_text.hpp"
+#include "hinf/common/suggest.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/synthesis.hpp"
 #include "bisection.hpp"
@@ -16,6 +18,12 @@ namespace {
 
 constexpr const char* kUncertaintyScale = "uncertainty_scale";
 constexpr const char* kDeltaBar = "delta_bar";
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
 
 // `solve` at one value: its outcome, never thrown.
 SweepPoint solve_at(const SweepParameter& parameter, double value, const std::string& yaml_text,
@@ -49,7 +57,15 @@ SweepParameter resolve_sweep_parameter(const std::string& name, const std::strin
                               "gamma (system: or hill:)",
                 "controller");
   SweepParameter p{name, name};
+  const std::vector<std::string> parameters = parameter_names(yaml_text, source_name);
+  if (std::find(parameters.begin(), parameters.end(), name) != parameters.end()) {
+    p.kind = SweepParameter::Kind::NamedParameter;
+    p.key_path.clear();
+    with_parameter_value(yaml_text, source_name, name, 0);  // names the key if its numbers are not plain
+    return p;
+  }
   if (name == kUncertaintyScale) {
+    p.kind = SweepParameter::Kind::UncertaintyScale;
     p.key_path.clear();
     const SynthConfig cfg = parse_config(yaml_text, source_name);
     if (cfg.plant.E.rows() == 0)
@@ -59,7 +75,17 @@ SweepParameter resolve_sweep_parameter(const std::string& name, const std::strin
     return p;
   }
   if (name == kDeltaBar) p.key_path = "hill.delta_bar";
-  with_value(yaml_text, source_name, p.key_path, 0);  // names the key if it is not a number of the config
+  try {
+    with_value(yaml_text, source_name, p.key_path, 0);  // names the key if it is not a number of the config
+  } catch (const Error&) {
+    if (parameters.empty() || name.find('.') != std::string::npos) throw;
+    const auto near = closest_match(name, parameters);
+    throw Error(ErrorCode::InvalidInput,
+                source_name + ": '" + name + "' is neither a parameter of the config (" +
+                    (near ? "did you mean '" + *near + "'?" : "its parameters: " + join(parameters)) +
+                    ") nor a key holding a number",
+                name);
+  }
   return p;
 }
 
@@ -68,7 +94,10 @@ SynthConfig config_at(const SweepParameter& parameter, double value, const std::
   if (!std::isfinite(value))
     throw Error(ErrorCode::InvalidInput, parameter.name + " = " + number_text(value) + ": not finite", parameter.name);
   const std::string at = source_name + " with " + parameter.name + " = " + number_text(value);
-  if (!parameter.key_path.empty()) return parse_config(with_value(yaml_text, source_name, parameter.key_path, value), at);
+  if (parameter.kind == SweepParameter::Kind::KeyPath)
+    return parse_config(with_value(yaml_text, source_name, parameter.key_path, value), at);
+  if (parameter.kind == SweepParameter::Kind::NamedParameter)
+    return parse_config(with_parameter_value(yaml_text, source_name, parameter.name, value), at);
   if (value < 0)
     throw Error(ErrorCode::InvalidInput, parameter.name + " = " + number_text(value) + ": must be >= 0", parameter.name);
   SynthConfig cfg = parse_config(yaml_text, at);
@@ -78,11 +107,14 @@ SynthConfig config_at(const SweepParameter& parameter, double value, const std::
 
 std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector<double>& values,
                               const std::string& yaml_text, const std::string& source_name,
-                              const std::function<bool()>& interrupted) {
+                              const std::function<bool()>& interrupted, const SweepPointObserver& on_point) {
   for (double v : values) config_at(parameter, v, yaml_text, source_name);  // every value valid before any solve
   std::vector<SweepPoint> points;
   points.reserve(values.size());
-  for (double v : values) points.push_back(solve_at(parameter, v, yaml_text, source_name, interrupted));
+  for (double v : values) {
+    points.push_back(solve_at(parameter, v, yaml_text, source_name, interrupted));
+    if (on_point) on_point(points.back());
+  }
   return points;
 }
 
@@ -133,7 +165,7 @@ std::vector<double> parse_sweep_range(const std::string& text, const std::string
 
 FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, double hi, double tolerance,
                                const std::string& yaml_text, const std::string& source_name,
-                               const std::function<bool()>& interrupted) {
+                               const std::function<bool()>& interrupted, const SweepPointObserver& on_point) {
   if (!(tolerance > 0) || !std::isfinite(tolerance))
     throw Error(ErrorCode::InvalidInput, "--tolerance = " + number_text(tolerance) + ": must be > 0", "tolerance");
   if (!(lo < hi)) throw Error(ErrorCode::InvalidInput, "--max-feasible: LO must be < HI", parameter.name);
@@ -142,6 +174,7 @@ FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, doubl
   const auto run = [&](double v) {
     s.evaluated.push_back(solve_at(parameter, v, yaml_text, source_name, interrupted));
     const SweepPoint& p = s.evaluated.back();
+    if (on_point) on_point(p);
     if (p.outcome == ErrorCode::InvalidInput) throw Error(ErrorCode::InvalidInput, p.message, parameter.name);
     if (p.outcome == ErrorCode::Infeasible && (!s.smallest_infeasible || v < s.smallest_infeasible->value))
       s.smallest_infeasible = p;

@@ -51,7 +51,7 @@ tamper A_F "$work/dint.yaml" "$work/tampered.yaml"
 run 1 verify_tampered verify "$dint" "$work/tampered.yaml"
 grep -q "NOT A - K C" "$work/verify_tampered.out" || say "verify does not name the broken realisation"
 mkdir "$work/c"
-run 0 codegen_dint codegen "$work/dint.yaml" --out "$work/c" --prefix dint
+run 0 codegen_dint codegen "$work/dint.yaml" -o "$work/c" --prefix dint
 
 # the Kalman predictor of the same plant: a certified gains file; its H2 below the H∞
 # filter's, its gamma above (each filter wins in its own norm)
@@ -79,7 +79,7 @@ tamper D_F "$work/dintf.yaml" "$work/tamperedf.yaml"
 run 1 verify_tamperedf verify "$dintf" "$work/tamperedf.yaml"
 grep -q "NOT A - K C, K, L - L M C, L M, G" "$work/verify_tamperedf.out" || say "verify does not name the broken filtered realisation"
 mkdir "$work/c3"
-run 0 codegen_dintf codegen "$work/dintf.yaml" --out "$work/c3" --prefix dintf
+run 0 codegen_dintf codegen "$work/dintf.yaml" -o "$work/c3" --prefix dintf
 grep -q "dintf_D_F\[i\]\[j\] \* y\[j\]" "$work/c3/dintf.c" || say "the generated C has no feedthrough D_F y"
 run 0 kalman_dintf kalman "$dintf" -o "$work/kalmanf.yaml"
 grep -q "method: .\?Kalman filter, estimate x_hat(k|k)" "$work/kalmanf.yaml" || say "kalman does not give the Kalman filter"
@@ -92,7 +92,7 @@ grep -q "^  G_F:$" "$work/tint.yaml" || say "gains file has no filter.G_F"
 grep -q "r: 1" "$work/tint.yaml" || say "gains file dimensions lack r"
 run 0 verify_tint verify "$tint" "$work/tint.yaml"
 mkdir "$work/c2"
-run 0 codegen_tint codegen "$work/tint.yaml" --out "$work/c2" --prefix tint
+run 0 codegen_tint codegen "$work/tint.yaml" -o "$work/c2" --prefix tint
 grep -q "tint_G_F\[i\]\[j\] \* u\[j\]" "$work/c2/tint.c" || say "the generated C has no known input G_F u"
 grep -q "void tint_step(tint_state \*s, const double y\[TINT_NY\], const double u\[TINT_NU\], double z\[TINT_NZ\]);" \
   "$work/c2/tint.h" || say "the generated step does not take the known input u"

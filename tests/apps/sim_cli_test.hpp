@@ -41,7 +41,7 @@ inline fs::path fresh_dir(const std::string& family, const std::string& name) {
 // exit code (−1 if it did not exit).
 inline int run_scenario_file(const fs::path& scenario, const std::string& args, const fs::path& out,
                              const fs::path& log) {
-  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() + " " + args +
+  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " -o " + out.string() + " " + args +
                           " > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -80,7 +80,7 @@ TEST_P(Scenarios, RunsBrieflyAndReplays) {
   const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / GetParam();
   const fs::path out = fresh_dir(fs::path(GetParam()).stem().string());
   const fs::path log = fs::temp_directory_path() / ("hinf_sim_e2e_" + std::to_string(::getpid()) + ".log");
-  ASSERT_EQ(run_sim(scenario.string() + " --out " + out.string() + " --duration 300 --quiet", log), 0) << slurp(log);
+  ASSERT_EQ(run_sim(scenario.string() + " -o " + out.string() + " --duration 300 --quiet", log), 0) << slurp(log);
   for (const char* f : {"trajectory.csv", "summary.json", "runs.csv"}) EXPECT_TRUE(fs::exists(out / f)) << f;
   for (const char* f : {"position_error.png", "velocity_error.png", "thrust.png"}) EXPECT_TRUE(is_png(out / f)) << f;
   for (const auto& e : fs::directory_iterator(out))
@@ -140,7 +140,7 @@ TEST(HinfSim, MonteCarloIndependentOfJobs) {
   const fs::path scenario = fs::path(HINF_SOURCE_DIR) / "configs" / "scenarios" / "paper-control.yaml";
   const fs::path a = fresh_dir("jobs1"), b = fresh_dir("jobs2");
   const fs::path log = fs::temp_directory_path() / ("hinf_sim_e2e_jobs_" + std::to_string(::getpid()) + ".log");
-  const std::string common = scenario.string() + " --duration 30 --runs 5 --seed 9 --no-plots --quiet --out ";
+  const std::string common = scenario.string() + " --duration 30 --runs 5 --seed 9 --no-plots --quiet -o ";
   ASSERT_EQ(run_sim(common + a.string() + " --jobs 1", log), 0) << slurp(log);
   ASSERT_EQ(run_sim(common + b.string() + " --jobs 2", log), 0) << slurp(log);
   for (const char* f : {"summary.json", "runs.csv", "trajectory.csv"}) EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
@@ -160,7 +160,7 @@ TEST(HinfSim, MonteCarloSurvivesThreadsTheSystemRefuses) {
   const fs::path a = fresh_dir("limited"), b = fresh_dir("serial");
   const fs::path log = fs::temp_directory_path() / ("hinf_sim_e2e_limit_" + std::to_string(::getpid()) + ".log");
   const std::string common =
-      scenario.string() + " --duration 2 --runs 1000 --seed 9 --no-plots --quiet --out ";
+      scenario.string() + " --duration 2 --runs 1000 --seed 9 --no-plots --quiet -o ";
   const std::string limited = "bash -c 'ulimit -v 4194304 && exec " + std::string(HINF_SIM_EXE) + " " + common +
                               a.string() + " --jobs 1000' > " + log.string() + " 2>&1";
   const int status = std::system(limited.c_str());
@@ -179,10 +179,10 @@ TEST(HinfSim, InvalidScenarioExits2NamesKeyAndWritesNothing) {
   std::ofstream(bad) << "duration: 10\ntruth: {initial_state: [1,2,3,4,5,6]}\nfilters: {ekf: {}}\nmetrics: {steady_state_strat: 1}\n";
   const fs::path out = dir / "out";
   const fs::path log = dir / "log.txt";
-  EXPECT_EQ(run_sim(bad.string() + " --out " + out.string(), log), 2);
+  EXPECT_EQ(run_sim(bad.string() + " -o " + out.string(), log), 2);
   EXPECT_NE(slurp(log).find("metrics.steady_state_strat"), std::string::npos) << slurp(log);
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_EQ(run_sim(dir.string() + "/missing.yaml --out " + out.string(), log), 2);
+  EXPECT_EQ(run_sim(dir.string() + "/missing.yaml -o " + out.string(), log), 2);
   EXPECT_EQ(run_sim(bad.string(), log), 2);  // --out is required
   fs::remove_all(dir);
 }

@@ -179,7 +179,7 @@ TEST(MatFile, SolveWritesTheGainsFileAsMatlabVariables) {
 TEST(MatFile, HinfSimWritesRunMatBesideItsCsvFiles) {
   const std::string out = scratch("run");
   ASSERT_EQ(run(std::string(HINF_SIM_EXE) + " " + HINF_SOURCE_DIR +
-                "/configs/scenarios/paper-no-control.yaml --out " + out +
+                "/configs/scenarios/paper-no-control.yaml -o " + out +
                 " --runs 2 --seed 7 --duration 300 --no-plots --quiet --format mat"),
             0);
   const MatFile f(out + "/run.mat");

@@ -46,7 +46,7 @@ TEST_P(SimulationApi, SameFilesAsTheExecutable) {
   fs::remove_all(out);
   std::ostringstream duration;
   duration << c.duration;
-  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " --out " + out.string() +
+  const std::string cmd = std::string(HINF_SIM_EXE) + " " + scenario.string() + " -o " + out.string() +
                           " --runs 2 --seed 7 --jobs 1 --no-plots --quiet --duration " + duration.str() + " 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   ASSERT_FALSE(result.files.empty());

@@ -212,7 +212,7 @@ void check_generated(const GainsFile& g, const std::string& prefix, Real real, s
   // Through the real command line: gains file (17 digits, exact round trip) -> hinf-synth codegen.
   hinf::test::write_text(dir / "gains.yaml", hinf::test::gains_yaml(g));
   const auto gen = hinf::test::run(codegen_program() + " codegen " + (dir / "gains.yaml") +
-                                   " --prefix " + prefix + " --out " + dir.path() +
+                                   " --prefix " + prefix + " -o " + dir.path() +
                                    (is_float ? " --real float" : " --real double"));
   ASSERT_EQ(gen.exit_code, 0) << gen.output;
   const Reference ref = make_reference(g, is_float, seed, start);

@@ -29,16 +29,16 @@ hinf::test::CommandResult codegen(const std::string& args) {
 TEST(CodegenCli, WritesTheFourFilesAndIsByteIdenticalAcrossRuns) {
   TempDir dir;
   const std::string gains = HINF_TEST_PAPER_GAINS;
-  auto r = codegen(gains + " --prefix nav --out " + (dir / "a"));
+  auto r = codegen(gains + " --prefix nav -o " + (dir / "a"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir / "a"), "nav.c nav.h nav_check.c nav_vectors.h");
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // a timestamp would change
-  r = codegen(gains + " --prefix nav --out " + (dir / "b"));
+  r = codegen(gains + " --prefix nav -o " + (dir / "b"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"nav.c", "nav.h", "nav_check.c", "nav_vectors.h"})
     EXPECT_EQ(hinf::test::read_text(dir / "a/" + f), hinf::test::read_text(dir / "b/" + f)) << f;
   // Regenerating over existing files replaces them.
-  r = codegen(gains + " --prefix nav --out " + (dir / "a") + " --real float");
+  r = codegen(gains + " --prefix nav -o " + (dir / "a") + " --real float");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(hinf::test::read_text(dir / "a/nav.h").find("float x[NAV_NX]"), std::string::npos);
   EXPECT_EQ(hinf::test::list_dir(dir / "a"), "nav.c nav.h nav_check.c nav_vectors.h");
@@ -48,7 +48,7 @@ TEST(CodegenCli, BadPrefixExits2AndWritesNothing) {
   TempDir dir;
   for (const char* prefix : {"1abc", "int", "nav-x", "_x", "strx"}) {
     const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix " + prefix +
-                           " --out " + (dir / "out"));
+                           " -o " + (dir / "out"));
     EXPECT_EQ(r.exit_code, 2) << prefix << ": " << r.output;
     EXPECT_NE(r.output.find(std::string("--prefix '") + prefix + "'"), std::string::npos)
         << r.output;
@@ -62,12 +62,12 @@ TEST(CodegenCli, TustinPeriodThatCannotApplyExits2AndWritesNothing) {
   TempDir dir;
   const std::string gains = HINF_TEST_PAPER_GAINS;
   for (const char* period : {"nan", "inf", "0", "-0.1"}) {
-    const auto r = codegen(gains + " --prefix nav --out " + (dir / "out") + " --tustin " + period);
+    const auto r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --tustin " + period);
     EXPECT_EQ(r.exit_code, 2) << period << ": " << r.output;
     EXPECT_NE(r.output.find(std::string("--tustin = ") + period + ": must be a positive, finite period"),
               std::string::npos) << period << ": " << r.output;
   }
-  const auto r = codegen(gains + " --prefix nav --out " + (dir / "out") + " --tustin 0.1");
+  const auto r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --tustin 0.1");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("is not a controller file"), std::string::npos) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
@@ -78,12 +78,12 @@ TEST(CodegenCli, BadGainsFileExits2AndWritesNothing) {
   hinf::test::write_text(dir / "bad.yaml",
                          "format: hinf-gains/1\nfilter:\n  A_F: [[1, 0], [0, 1]]\n"
                          "  B_F: [[1], [1], [1]]\n  C_F: [[1, 0]]\n");
-  auto r = codegen((dir / "bad.yaml") + " --prefix nav --out " + (dir / "out"));
+  auto r = codegen((dir / "bad.yaml") + " --prefix nav -o " + (dir / "out"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("bad.yaml"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("filter.B_F"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("got 3x1"), std::string::npos) << r.output;
-  r = codegen((dir / "missing.yaml") + " --prefix nav --out " + (dir / "out"));
+  r = codegen((dir / "missing.yaml") + " --prefix nav -o " + (dir / "out"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("missing.yaml"), std::string::npos) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "bad.yaml");
@@ -94,7 +94,7 @@ TEST(CodegenCli, UnwritableOutputExits2AndLeavesNothing) {
   hinf::test::write_text(dir / "file", "x");
   // --out is a regular file; --out lies under a regular file.
   for (const std::string& out : {dir / "file", dir / "file/sub"}) {
-    const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav --out " + out);
+    const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav -o " + out);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("cannot write"), std::string::npos) << r.output;
   }
@@ -102,7 +102,7 @@ TEST(CodegenCli, UnwritableOutputExits2AndLeavesNothing) {
   EXPECT_EQ(hinf::test::read_text(dir / "file"), "x");
   // A target that is in the way (nav.c is a directory): rolled back completely.
   std::filesystem::create_directories(dir / "out/nav.c");
-  const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav --out " +
+  const auto r = codegen(std::string(HINF_TEST_PAPER_GAINS) + " --prefix nav -o " +
                          (dir / "out"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir / "out"), "nav.c");
@@ -111,11 +111,11 @@ TEST(CodegenCli, UnwritableOutputExits2AndLeavesNothing) {
 TEST(CodegenCli, BadOptionsExit2) {
   TempDir dir;
   const std::string g = HINF_TEST_PAPER_GAINS;
-  EXPECT_EQ(codegen(g + " --prefix nav --out " + (dir / "o") + " --real half").exit_code, 2);
-  EXPECT_EQ(codegen(g + " --out " + (dir / "o")).exit_code, 2);              // no --prefix
+  EXPECT_EQ(codegen(g + " --prefix nav -o " + (dir / "o") + " --real half").exit_code, 2);
+  EXPECT_EQ(codegen(g + " -o " + (dir / "o")).exit_code, 2);              // no --prefix
   EXPECT_EQ(codegen(g + " --prefix nav").exit_code, 2);                      // no --out
-  EXPECT_EQ(codegen("--prefix nav --out " + (dir / "o")).exit_code, 2);      // no gains file
-  EXPECT_EQ(codegen(g + " --prefix nav --out " + (dir / "o") + " --vector-steps 0").exit_code, 2);
+  EXPECT_EQ(codegen("--prefix nav -o " + (dir / "o")).exit_code, 2);      // no gains file
+  EXPECT_EQ(codegen(g + " --prefix nav -o " + (dir / "o") + " --vector-steps 0").exit_code, 2);
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
 }
 
@@ -131,7 +131,7 @@ TEST(CodegenCli, ControllerFileStepMatchesTheRuntimeController) {
   const std::string config = std::string(HINF_TEST_CONTROLLERS_DIR) + "/double-integrator-discrete.yaml";
   auto r = hinf::test::run(cli() + " solve " + config + " -o " + (dir / "k.yaml"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c"));
+  r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "c"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string h = hinf::test::read_text(dir / "c/hold.h");
   EXPECT_NE(h.find("#define HOLD_NU 1"), std::string::npos) << h;
@@ -166,11 +166,11 @@ TEST(CodegenCli, ContinuousControllerNeedsTustin) {
   const std::string config = std::string(HINF_TEST_CONTROLLERS_DIR) + "/double-integrator.yaml";
   auto r = hinf::test::run(cli() + " solve " + config + " -o " + (dir / "k.yaml"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c"));
+  r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "c"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--tustin PERIOD"), std::string::npos) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir / "c"), "");
-  r = codegen((dir / "k.yaml") + " --prefix hold --out " + (dir / "c") + " --tustin 0.1");
+  r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "c") + " --tustin 0.1");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(hinf::test::read_text(dir / "c/hold.h").find("Sample time: 0.10000000000000001 s"), std::string::npos);
 }

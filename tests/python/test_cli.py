@@ -83,3 +83,91 @@ def test_a_run_replaces_the_earlier_run_in_its_directory(tmp_path):
                            capture_output=True, text=True)
     j = json.loads(third.stdout)
     assert third.returncode == 0 and j["replaced_previous_run"] is True and j["removed_previous_files"] == []
+
+
+def test_sweep_by_a_named_parameter_in_its_units(tmp_path):
+    """sweep --param k=… on a config with a named parameter k (issue 38 #5): the values are k's,
+    the design point moves to each; at the config's own nominal the point is solve's γ, bit
+    for bit; a misspelt name is named with the closest parameter."""
+    config = os.path.join(ROOT, "configs", "example-parameters.yaml")
+    swept = synth("sweep", config, "--param", "k=0.5:0.25:1", "--json", "-", "-q")
+    assert swept.returncode == 0, swept.stderr
+    points = json.loads(swept.stdout)["points"][::-1]  # k = 1 (the config's nominal) first
+    assert [p["value"] for p in points] == [1, 0.75, 0.5]
+    assert all(p["outcome"] == "certified" for p in points)
+    solve = synth("solve", config, "--json", "-q", "-o", str(tmp_path / "g.yaml"))
+    assert solve.returncode == 0, solve.stderr
+    assert points[0]["gamma"] == json.loads(solve.stdout)["gamma"]
+    assert len({p["gamma"] for p in points}) == 3  # a stiffer coupling is another plant
+    typo = synth("sweep", config, "--param", "kk=1:1:2")
+    assert typo.returncode == 2 and "did you mean 'k'?" in typo.stderr
+    # analyze names the worst case found in k's units, inside k's range, below the certified γ
+    analysis = synth("analyze", config, str(tmp_path / "g.yaml"), "--json")
+    assert analysis.returncode == 0, analysis.stderr
+    a = json.loads(analysis.stdout)
+    assert list(a["worst_parameters"]) == ["k"] and 0.95 <= a["worst_parameters"]["k"] <= 1.05
+    assert a["hinf_norm_nominal"] * (1 - 1e-7) <= a["worst_parameters_gain"] <= a["robust_bound"] <= points[0]["gamma"]
+    text = synth("analyze", config, str(tmp_path / "g.yaml")).stdout
+    assert re.search(r"worst case in the box +[0-9.]+ at k = [0-9.]+", text), text
+
+
+def test_the_older_out_spelling_still_works_with_a_note(tmp_path):
+    """--out (hinf-sim, codegen) is the older spelling of -o/--output: it still writes where it
+    says, with a note on stderr; given beside -o it is refused; neither is 'required'."""
+    sim = os.environ.get("HINF_SIM", os.path.join(ROOT, "build", "bin", "hinf-sim"))
+    scenario = os.path.join(ROOT, "configs", "scenarios", "paper-no-control.yaml")
+    old = subprocess.run([sim, scenario, "--out", str(tmp_path / "r"), "--duration", "50", "--no-plots", "-q"],
+                         capture_output=True, text=True)
+    assert old.returncode == 0 and (tmp_path / "r" / "summary.json").exists(), old.stderr
+    assert "--out is the older spelling of -o/--output" in old.stderr
+    both = subprocess.run([sim, scenario, "--out", str(tmp_path / "a"), "-o", str(tmp_path / "b")],
+                          capture_output=True, text=True)
+    assert both.returncode == 2 and "excludes" in both.stderr and not (tmp_path / "a").exists()
+    none = subprocess.run([sim, scenario], capture_output=True, text=True)
+    assert none.returncode == 2 and "hinf-sim: error: --output is required" in none.stderr
+    gen = synth("codegen", GOLDEN, "--prefix", "nav", "--out", str(tmp_path / "c"))
+    assert gen.returncode == 0 and (tmp_path / "c" / "nav.h").exists(), gen.stderr
+    assert "--out is the older spelling of -o/--output" in gen.stderr
+    gen_none = synth("codegen", GOLDEN, "--prefix", "nav")
+    assert gen_none.returncode == 2 and "--output is required" in gen_none.stderr
+
+
+def test_verbose_on_every_subcommand(tmp_path):
+    """-v on the subcommands that run no synthesis: each stage on stderr with its wall time;
+    sweep: each point as it ends; stdout unchanged by -v."""
+    cases = {
+        "analyze": ["analyze", CONFIG, GOLDEN],
+        "verify": ["verify", CONFIG, GOLDEN],
+        "export-sdpa": ["export-sdpa", CONFIG, "-o", str(tmp_path / "p.dat-s")],
+        "kalman": ["kalman", CONFIG, "-o", str(tmp_path / "k.yaml")],
+        "compare": ["compare", CONFIG, GOLDEN, "--points", "10"],
+        "codegen": ["codegen", GOLDEN, "--prefix", "nav", "-o", str(tmp_path / "c")],
+        "sweep": ["sweep", CONFIG, "--param", "delta_bar=0:1:1"],
+    }
+    for name, args in cases.items():
+        quiet = synth(*args)
+        loud = synth(*args, "-v")
+        assert loud.returncode == 0 and quiet.returncode == 0, (name, loud.stderr)
+        lines = [l for l in loud.stderr.splitlines() if l.startswith("hinf-synth: " + name + ": ")]
+        assert lines and all(re.search(r"\(\d[\d.e+-]* s\)$", l) for l in lines), (name, loud.stderr)
+        assert not [l for l in quiet.stderr.splitlines() if l.startswith("hinf-synth: " + name + ": ")], name
+        assert timing_apart(loud.stdout) == timing_apart(quiet.stdout), name
+    assert "delta_bar = 1: gamma = " in synth(*cases["sweep"], "-v").stderr
+
+
+def test_each_further_campaign_is_labelled(tmp_path):
+    """gps-ins-flyaround runs table 1's campaigns after the scenario's own: each is announced
+    before its progress lines (issue 38 #2: three unlabelled bars); -q prints none of it."""
+    sim = os.environ.get("HINF_SIM", os.path.join(ROOT, "build", "bin", "hinf-sim"))
+    scenario = os.path.join(ROOT, "configs", "scenarios", "gps-ins-flyaround.yaml")
+    run = subprocess.run([sim, scenario, "-o", str(tmp_path / "a"), "--runs", "2", "--duration", "30", "--no-plots"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    lines = run.stderr.splitlines()
+    labels = [l for l in lines if "campaign" in l]
+    assert labels == ["hinf-sim: campaign 2 of 3: table 1 at inertia_products_fraction = 0.1",
+                      "hinf-sim: campaign 3 of 3: table 1 at inertia_products_fraction = 0.3"], run.stderr
+    assert lines.index(labels[0]) > 0 and "of the runs" in lines[lines.index(labels[0]) + 1]
+    quiet = subprocess.run([sim, scenario, "-o", str(tmp_path / "b"), "--runs", "2", "--duration", "30", "--no-plots",
+                            "-q"], capture_output=True, text=True)
+    assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr

@@ -107,7 +107,7 @@ def test_export_codegen_and_compare_describe_what_they_wrote(tmp_path):
     out = tmp_path / "lmi.dat-s"
     code, e = synth_json("export-sdpa", config, "-o", str(out))
     assert code == 0 and e["schema"] == "hinf-synth.export-sdpa/1" and e["bytes"] == out.stat().st_size
-    code, g = synth_json("codegen", golden, "--prefix", "nav", "--out", str(tmp_path / "gen"))
+    code, g = synth_json("codegen", golden, "--prefix", "nav", "-o", str(tmp_path / "gen"))
     assert code == 0 and g["schema"] == "hinf-synth.codegen/1"
     assert sorted(os.path.basename(f["path"]) for f in g["files"]) == sorted(os.listdir(tmp_path / "gen"))
     for f in g["files"]:
@@ -133,7 +133,7 @@ def test_sweep_json_carries_its_schema(tmp_path):
 def test_hinf_sim_json_is_the_run_directorys_summary(tmp_path):
     sim = os.environ.get("HINF_SIM", os.path.join(ROOT, "build", "bin", "hinf-sim"))
     out = tmp_path / "run"
-    run = subprocess.run([sim, path("configs", "scenarios", "paper-no-control.yaml"), "--out", str(out), "--runs", "2",
+    run = subprocess.run([sim, path("configs", "scenarios", "paper-no-control.yaml"), "-o", str(out), "--runs", "2",
                           "--seed", "7", "--no-plots", "--quiet", "--duration", "300", "--json"],
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr

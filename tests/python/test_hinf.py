@@ -100,7 +100,7 @@ def test_simulate_gives_the_executables_run_directory(tmp_path):
     scenario = path("configs", "scenarios", "paper-no-control.yaml")
     c = hinf.simulate(scenario, runs=2, seed=7, duration=300)
     out = tmp_path / "run"
-    cli = subprocess.run([SIM, scenario, "--out", str(out), "--runs", "2", "--seed", "7", "--no-plots", "--quiet",
+    cli = subprocess.run([SIM, scenario, "-o", str(out), "--runs", "2", "--seed", "7", "--no-plots", "--quiet",
                           "--duration", "300"], capture_output=True, text=True)
     assert cli.returncode == 0, cli.stderr
     listing = sorted(p.name for p in out.iterdir())
@@ -176,7 +176,7 @@ def test_kalman_writes_the_executables_file(tmp_path):
 @pytest.mark.parametrize("gains, options", [("tests/golden/paper-dbar0.05.yaml", []),
                                             ("tests/golden/tumbling-hold.yaml", ["--tustin", "0.1", "--real", "float"])])
 def test_codegen_gives_the_executables_files(gains, options, tmp_path):
-    run = subprocess.run([SYNTH, "codegen", path(gains), "--prefix", "nav", "--out", str(tmp_path / "cli")] + options,
+    run = subprocess.run([SYNTH, "codegen", path(gains), "--prefix", "nav", "-o", str(tmp_path / "cli")] + options,
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     kwargs = {"tustin": 0.1, "real": "float"} if options else {}

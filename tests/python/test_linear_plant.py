@@ -86,3 +86,21 @@ def test_refusals_exit_2_naming_the_key(tmp_path):
         run = sim(str(scenario), "-o", str(tmp_path / "out"), "-q")
         assert run.returncode == 2 and expected in run.stderr, run.stderr
         assert not (tmp_path / "out").exists()
+
+
+def test_truth_parameters_in_their_units(tmp_path):
+    """truth: {parameters: {k: random}}: each run's k drawn on the config's range, runs.csv and
+    summary.json name it (issue 38 #4: parameters drawn per run from their ranges)."""
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text("scenario: linear_plant\nconfig: " + os.path.join(ROOT, "configs", "example-parameters.yaml") +
+                        "\nduration: 20\nfilters: {kalman: {}}\ntruth: {parameters: {k: random}}\n")
+    out = tmp_path / "run"
+    run = sim(str(scenario), "-o", str(out), "--runs", "6", "--no-plots", "-q")
+    assert run.returncode == 0, run.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["truth_parameters"] == {"k": "random"} and "uncertainty_delta" not in summary
+    with open(out / "runs.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert list(rows[0])[:4] == ["run", "seed", "filter", "k"]
+    ks = [float(r["k"]) for r in rows]
+    assert all(0.95 <= k <= 1.05 for k in ks) and len(set(ks)) == 6

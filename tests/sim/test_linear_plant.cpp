@@ -177,6 +177,32 @@ TEST(LinearPlantScenario, RefusesWhatItCannotRun) {
   refused("duration: 10\nfilters: {hinf: {}}\ntruth: {uncertainty_delta: randm}\n", "uncertainty_delta");
   const std::string gains = std::string(HINF_SOURCE_DIR) + "/tests/golden/paper-dbar0.05.yaml";
   refused("duration: 10\nfilters: {hinf: {gains: " + gains + "}}\n", "the config's plant has m = 1, l = 2");
+  refused("duration: 10\nfilters: {hinf: {}}\ntruth: {parameters: {kk: 1}}\n", "did you mean 'k'");
+  refused("duration: 10\nfilters: {hinf: {}}\ntruth: {parameters: {k: 1.1}}\n", "range [0.95, 1.05]");
+  refused("duration: 10\nfilters: {hinf: {}}\ntruth: {parameters: {k: 1}, uncertainty_delta: 0}\n", "not both");
+}
+
+// truth.parameters names the plant in the parameters' units: k = 1.05, the top of the example's
+// range [0.95, 1.05] about ν = 1, is δ = 1, the run of uncertainty_delta: 1 to the last bit; k
+// drawn at random stays in its range and runs.csv names it.
+TEST(LinearPlantScenario, TheTruthIsGivenByTheParametersValues) {
+  const hinf::test::ScratchDir dir("linear_plant_parameters");
+  const auto parsed = [&](const std::string& truth) {
+    const std::string path = write_scenario(dir, "duration: 5\nfilters: {kalman: {}}\ntruth: " + truth + "\n");
+    return hinf::sim::parse_linear_plant_scenario(read_text(path), path);
+  };
+  const auto by_value = parsed("{parameters: {k: 1.05}}"), by_delta = parsed("{uncertainty_delta: 1}");
+  ASSERT_EQ(by_value.scenario.truth_parameters.size(), 1u);
+  const auto a = hinf::sim::run_linear_plant(by_value.scenario, by_value.filters, by_value.options, 3);
+  const auto b = hinf::sim::run_linear_plant(by_delta.scenario, by_delta.filters, by_delta.options, 3);
+  EXPECT_EQ(a[0].delta, b[0].delta);
+  EXPECT_EQ(a[0].error_rms, b[0].error_rms);
+  EXPECT_EQ(by_value.scenario.truth_A(a[0].delta), by_delta.scenario.truth_A(b[0].delta));
+  const auto random = parsed("{parameters: {k: random}}");
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const double k = 1 + 0.05 * hinf::sim::run_linear_plant(random.scenario, random.filters, random.options, seed)[0].delta(0);
+    EXPECT_TRUE(k >= 0.95 && k <= 1.05) << k;
+  }
 }
 
 }  // namespace

@@ -62,3 +62,24 @@ TEST(SummaryTable, TheFamilysHeadlineMetricsWhenItNamesThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// A metric whose statistics over the runs are lists (the manoeuvring family's settling time per
+// manoeuvre) or null (never settled) is no column and never a crash (issue 38: `hinf-sim
+// manoeuvring-target-chaser-free.yaml --runs 100`, the README's example, ended "internal error:
+// type must be number, but is array", exit 4, once the runs were done).
+TEST(SummaryTable, ListsAndNullStatisticsAreNotColumns) {
+  std::string t;
+  EXPECT_NO_THROW(t = hinf::sim::summary_table(
+                      R"({"filters": {"transient": {"settle_after_onset_s": {"mean": [1, 2], "std": [0, 0]},
+                                                     "never": {"mean": null, "std": null},
+                                                     "detection_delay_s": {"mean": 42, "std": 0}}}})"));
+  EXPECT_EQ(t.find("settle_after_onset_s"), std::string::npos) << t;
+  EXPECT_EQ(t.find("never"), std::string::npos) << t;
+  EXPECT_NE(t.find("42 ± 0"), std::string::npos) << t;
+  EXPECT_NO_THROW(hinf::sim::summary_table(
+      R"({"headline_metrics": ["never"], "filters": {"f": {"never": {"mean": null, "std": null}}}})"));
+}
+
+}  // namespace

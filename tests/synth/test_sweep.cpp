@@ -134,4 +134,58 @@ TEST(Sweep, EveryGridPointBelowTheBoundaryIsCertifiedAndEveryOneAboveVerifiedInf
     EXPECT_GT(points[i].gamma, points[i - 1].gamma * (1 - 1e-6));  // more uncertainty, no smaller bound
 }
 
+
+// The two-mass plant with the coupling stiffness k named (docs/maths.md §22), and the same
+// plant written with k's numbers by hand: a sweep by the parameter's name (§21) must give the
+// hand-written plant, nominal and range moved to the value in k's units.
+std::string two_mass_with_k(const std::string& parameter_line, const std::string& k) {
+  return "constants: {c: 0.2}\n" + parameter_line +
+         "system:\n"
+         "  A: [[0, 0, 1, 0], [0, 0, 0, 1], [-1 - " + k + ", " + k + ", -c, 0], [" + k + ", -" + k + ", 0, -c]]\n"
+         "  B: [[0, 0], [0, 0], [1, 0], [0, 1]]\n"
+         "  C: [[0, 1, 0, 0]]\n"
+         "  D: [[0.1]]\n"
+         "  L: [[1, 0, 0, 0], [0, 1, 0, 0]]\n"
+         "  sample_time: 0.05\n"
+         "  discretisation: euler\n";
+}
+
+void expect_same_plant(const synth::SynthConfig& a, const synth::SynthConfig& b) {
+  EXPECT_TRUE(a.plant.A.isApprox(b.plant.A, 1e-14)) << a.plant.A << "\n\n" << b.plant.A;
+  EXPECT_TRUE(a.plant.H.isApprox(b.plant.H, 1e-14) && a.plant.E.isApprox(b.plant.E, 1e-14))
+      << a.plant.H << "\n" << a.plant.E << "\n\n" << b.plant.H << "\n" << b.plant.E;
+}
+
+TEST(Sweep, ANamedParameterIsSweptInItsOwnUnitsWithItsRangeMovedAlong) {
+  const std::string named = two_mass_with_k("parameters:\n  k: {nominal: 1, range: [0.9, 1.2]}\n", "k");
+  const synth::SweepParameter k = synth::resolve_sweep_parameter("k", named, "c.yaml");
+  EXPECT_EQ(k.kind, synth::SweepParameter::Kind::NamedParameter);
+  // k = 1.5: nominal 1.5, range [1.4, 1.7] (offsets −0.1, +0.2 kept), in the text only there.
+  const std::string moved = synth::with_parameter_value(named, "c.yaml", "k", 1.5);
+  EXPECT_EQ(moved.substr(moved.find("system:")), named.substr(named.find("system:")));
+  expect_same_plant(synth::config_at(k, 1.5, named, "c.yaml"),
+                    synth::parse_config(two_mass_with_k("parameters:\n  k: {nominal: 1.5, range: [1.4, 1.7]}\n", "k"),
+                                        "hand.yaml"));
+  // The nominal plant is A(k) with k's number written in: the design point is the value.
+  const synth::SynthConfig at2 = synth::config_at(k, 2, named, "c.yaml");
+  const synth::SynthConfig by_hand = synth::parse_config(two_mass_with_k("", "2"), "hand.yaml");
+  EXPECT_TRUE(at2.plant.A.isApprox(by_hand.plant.A, 1e-15)) << at2.plant.A;
+  // Without a nominal the range's centre is the design point: it moves to the value.
+  const std::string centred = two_mass_with_k("parameters:\n  k:\n    range: [0.9, 1.1]\n", "k");
+  expect_same_plant(synth::config_at(synth::resolve_sweep_parameter("k", centred, "c.yaml"), 3, centred, "c.yaml"),
+                    synth::parse_config(two_mass_with_k("parameters:\n  k: {range: [2.9, 3.1]}\n", "k"), "hand.yaml"));
+}
+
+TEST(Sweep, AParameterNameThatIsNotOneIsNamedWithTheClosest) {
+  const std::string named = two_mass_with_k("parameters:\n  k: {nominal: 1, range: [0.9, 1.2]}\n", "k");
+  EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("kk", named, "c.yaml"); }), "did you mean 'k'?");
+  EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("zeta", named, "c.yaml"); }), "its parameters: k");
+  const std::string quoted = two_mass_with_k("parameters:\n  k: {nominal: 1, range: ['0.9', 1.2]}\n", "k");
+  EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("k", quoted, "c.yaml"); }),
+             "'parameters.k.range' is not a plain number");
+  // A value that is not a number is named before any config is read.
+  const synth::SweepParameter k = synth::resolve_sweep_parameter("k", named, "c.yaml");
+  EXPECT_HAS(error_of([&] { synth::config_at(k, std::nan(""), named, "c.yaml"); }), "k = ");
+}
+
 }  // namespace

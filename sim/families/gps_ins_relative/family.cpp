@@ -4,6 +4,8 @@
 // (one campaign per fraction, same seeds).
 #include <algorithm>
 
+#include "hinf/common/number_text.hpp"
+
 #include "gps_ins_report.hpp"
 
 namespace hinf::sim::families {
@@ -25,11 +27,18 @@ void table1(const CampaignRequest& r, const GpsInsExperiment& e, const Campaign&
             std::vector<std::pair<std::string, std::string>>& files) {
   if (e.table1_fractions.empty()) return;
   std::vector<Campaign> campaigns;
+  const auto own_fraction = [&](double p) { return p == e.scenario.inertia_products_fraction; };
+  const long total = 1 + std::count_if(e.table1_fractions.begin(), e.table1_fractions.end(),
+                                       [&](double p) { return !own_fraction(p); });
+  long number = 1;
   for (double p : e.table1_fractions) {
-    if (p == e.scenario.inertia_products_fraction) {
+    if (own_fraction(p)) {
       campaigns.push_back(own);
       continue;
     }
+    if (r.on_campaign)
+      r.on_campaign("campaign " + std::to_string(++number) + " of " + std::to_string(total) +
+                    ": table 1 at inertia_products_fraction = " + number_text(p));
     GpsInsScenario scenario = e.scenario;
     scenario.inertia_products_fraction = p;
     campaigns.push_back(stream_campaign(functions(), r, e, scenario, nullptr));

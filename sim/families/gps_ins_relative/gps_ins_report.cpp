@@ -23,7 +23,7 @@ constexpr const char* kErrorNames[15] = {"pos_x", "pos_y", "pos_z", "vel_x", "ve
 
 // The metrics of one filter in one run, in the order of runs.csv and summary.json (largest
 // component of each block).
-std::vector<std::pair<const char*, double>> metric_list(const GpsInsFilterStatistics& s) {
+std::vector<std::pair<const char*, double>> gps_ins_metric_list(const GpsInsFilterStatistics& s) {
   return {{"position_max_m", s.position_max.maxCoeff()},     {"velocity_max_mps", s.velocity_max.maxCoeff()},
           {"attitude_max_deg", s.attitude_max.maxCoeff()},   {"rate_max_dps", s.rate_max.maxCoeff()},
           {"bias_max_dps", s.bias_max.maxCoeff()},           {"position_rms_m", s.position_rms.maxCoeff()},
@@ -120,13 +120,6 @@ std::string format_gps_ins_trajectory_csv(const GpsInsExperiment& e,
   return out;
 }
 
-// stats[r][f] = filter f's window statistics in run r.
-std::string format_gps_ins_runs_csv(const GpsInsExperiment& e,
-                                    const std::vector<std::vector<GpsInsFilterStatistics>>& stats,
-                                    const std::vector<std::uint64_t>& seeds) {
-  return metrics_runs_csv(e.filters, stats, seeds, [](const GpsInsFilterStatistics& s) { return metric_list(s); });
-}
-
 std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
                                         const std::vector<std::vector<GpsInsFilterStatistics>>& stats,
                                         const std::string& scenario_path, std::uint64_t seed) {
@@ -136,7 +129,7 @@ std::string format_gps_ins_summary_json(const GpsInsExperiment& e,
   j["inertia_products_fraction"] = json_num(e.scenario.inertia_products_fraction);
   Json filters = Json::object();
   for (std::size_t f = 0; f < e.filters.size(); ++f) {
-    const auto per_run = metrics_per_run(stats, f, [](const GpsInsFilterStatistics& s) { return metric_list(s); });
+    const auto per_run = metrics_per_run(stats, f, gps_ins_metric_list);
     Json m = Json::object();
     add_metrics_json(m, per_run);
     filters[e.filters[f].name] = m;
@@ -199,7 +192,9 @@ namespace families {
 
 const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample>& gps_ins_outputs() {
   static const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample> outputs{
-      format_gps_ins_trajectory_csv, format_gps_ins_runs_csv, format_gps_ins_summary_json, write_gps_ins_plots};
+      format_gps_ins_trajectory_csv,
+      metrics_runs_csv_of<&gps_ins_metric_list, GpsInsExperiment, GpsInsFilterStatistics>,
+      format_gps_ins_summary_json, write_gps_ins_plots};
   return outputs;
 }
 

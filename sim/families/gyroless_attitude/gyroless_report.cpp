@@ -21,7 +21,7 @@ constexpr const char* kGyrolessErrorNames[9] = {"roll", "pitch", "yaw", "wx", "w
 constexpr const char* kGyrolessAxes[3] = {"x", "y", "z"};
 
 // The metrics of one filter in one run, in the order of runs.csv and summary.json.
-std::vector<std::pair<std::string, double>> metric_list(const GyrolessFilterStatistics& s) {
+std::vector<std::pair<std::string, double>> gyroless_metric_list(const GyrolessFilterStatistics& s) {
   std::vector<std::pair<std::string, double>> m{{"attitude_rms_deg", s.attitude_rms_norm_deg}};
   for (int i = 0; i < 3; ++i) m.emplace_back(std::string("attitude_rms_deg_") + kGyrolessErrorNames[i], s.attitude_rms_deg(i));
   m.emplace_back("torque_rms_nm", s.torque_rms_norm);
@@ -159,22 +159,16 @@ std::string format_gyroless_trajectory_csv(const GyrolessExperiment& e,
   return out;
 }
 
-// stats[r][f] = filter f's window statistics in run r.
-std::string format_gyroless_runs_csv(const GyrolessExperiment& e,
-                                     const std::vector<std::vector<GyrolessFilterStatistics>>& stats,
-                                     const std::vector<std::uint64_t>& seeds) {
-  return metrics_runs_csv(e.filters, stats, seeds, [](const GyrolessFilterStatistics& s) { return metric_list(s); });
-}
-
 std::string format_gyroless_summary_json(const GyrolessExperiment& e,
                                          const std::vector<std::vector<GyrolessFilterStatistics>>& stats,
                                          const std::string& scenario_path, std::uint64_t seed) {
   Json j = summary_header(scenario_path, seed, stats.size(), e.scenario.duration);
   j["scenario_family"] = "gyroless_attitude";
+  j["headline_metrics"] = {"attitude_rms_deg", "torque_rms_nm", "nees_mean"};  // hinf-sim's end-of-run table
   j["steady_state_start_s"] = json_num(e.options.window_start);
   Json filters = Json::object();
   for (std::size_t f = 0; f < e.filters.size(); ++f) {
-    const auto per_run = metrics_per_run(stats, f, [](const GyrolessFilterStatistics& s) { return metric_list(s); });
+    const auto per_run = metrics_per_run(stats, f, gyroless_metric_list);
     Json m = Json::object();
     m["type"] = e.filters[f].kind == GyrolessFilterKind::Aekf     ? "aekf"
                 : e.filters[f].kind == GyrolessFilterKind::Astekf ? "astekf"
@@ -213,7 +207,9 @@ namespace families {
 
 const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample>& gyroless_outputs() {
   static const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample> outputs{
-      format_gyroless_trajectory_csv, format_gyroless_runs_csv, format_gyroless_summary_json, write_gyroless_plots};
+      format_gyroless_trajectory_csv,
+      metrics_runs_csv_of<&gyroless_metric_list, GyrolessExperiment, GyrolessFilterStatistics>,
+      format_gyroless_summary_json, write_gyroless_plots};
   return outputs;
 }
 

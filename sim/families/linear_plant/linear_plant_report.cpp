@@ -20,14 +20,23 @@ using LinearSamples = std::vector<std::vector<LinearPlantSample>>;
 using LinearCampaign = std::vector<std::vector<LinearPlantStatistics>>;
 
 // The metrics of one filter in one run, in the order of runs.csv and summary.json: the run's
-// δ of each of F's `blocks` first (NaN for a default Stats, which only names the columns); the
-// diverged flag only in runs.csv (summary.json: `diverged` or `diverged_runs`, as every family).
+// truth first — each named parameter's value in its units (`truth.parameters`), else the δ
+// of each of F's blocks (NaN for a default Stats, which only names the columns); the diverged
+// flag only in runs.csv (summary.json: `diverged` or `diverged_runs`, as every family).
 enum class Diverged { Column, Apart };
-std::vector<std::pair<std::string, double>> metric_list(const LinearPlantStatistics& s, int blocks, Diverged d) {
+std::vector<std::pair<std::string, double>> metric_list(const LinearPlantStatistics& s,
+                                                        const LinearPlantScenario& scenario, Diverged d) {
   std::vector<std::pair<std::string, double>> out;
-  for (int b = 0; b < blocks; ++b)
-    out.emplace_back("delta_" + std::to_string(b + 1),
-                     b < s.delta.size() ? s.delta(b) : std::numeric_limits<double>::quiet_NaN());
+  const auto& parameters = scenario.truth_parameters;
+  for (int b = 0; b < scenario.uncertainty_blocks(); ++b) {
+    const double delta = b < s.delta.size() ? s.delta(b) : std::numeric_limits<double>::quiet_NaN();
+    if (parameters.empty()) {
+      out.emplace_back("delta_" + std::to_string(b + 1), delta);
+    } else {
+      const TruthParameter& p = parameters[static_cast<std::size_t>(b)];
+      out.emplace_back(p.name, p.nominal + delta * p.radius);
+    }
+  }
   out.insert(out.end(), {{"error_rms", s.error_rms},
                          {"predicted_error_rms", s.predicted_rms},
                          {"error_max", s.error_max}});
@@ -67,9 +76,8 @@ std::string format_linear_plant_trajectory_csv(const LinearPlantExperiment& e, c
 // stats[r][f] = filter f's statistics in run r.
 std::string format_linear_plant_runs_csv(const LinearPlantExperiment& e, const LinearCampaign& stats,
                                          const std::vector<std::uint64_t>& seeds) {
-  const int blocks = e.scenario.uncertainty_blocks();
   return metrics_runs_csv(e.filters, stats, seeds, [&](const LinearPlantStatistics& s) {
-    return metric_list(s, blocks, Diverged::Column);
+    return metric_list(s, e.scenario, Diverged::Column);
   });
 }
 
@@ -83,7 +91,13 @@ std::string format_linear_plant_summary_json(const LinearPlantExperiment& e, con
   j["noise"] = {{"process_std", json_num(s.process_std)},
                 {"measurement_std", json_num(s.measurement_std)},
                 {"initial_state_std", json_num(s.initial_state_std)}};
-  j["uncertainty_delta"] = s.random_uncertainty ? Json("random") : json_num(s.uncertainty_delta);
+  if (s.truth_parameters.empty()) {
+    j["uncertainty_delta"] = s.random_uncertainty ? Json("random") : json_num(s.uncertainty_delta);
+  } else {
+    Json truth = Json::object();
+    for (const TruthParameter& p : s.truth_parameters) truth[p.name] = p.value ? json_num(*p.value) : Json("random");
+    j["truth_parameters"] = std::move(truth);
+  }
   j["steady_state_start_s"] = json_num(e.options.window_start);
   j["headline_metrics"] = {"error_rms", "predicted_error_rms", "error_max"};  // hinf-sim's end-of-run table
   Json filters = Json::object();
@@ -93,9 +107,8 @@ std::string format_linear_plant_summary_json(const LinearPlantExperiment& e, con
     m["type"] = filter.type;
     m["origin"] = filter.origin;
     m["gamma"] = json_opt(filter.gamma);
-    const int blocks = s.uncertainty_blocks();
     add_metrics_json(m, metrics_per_run(stats, f, [&](const LinearPlantStatistics& x) {
-                       return metric_list(x, blocks, Diverged::Apart);
+                       return metric_list(x, s, Diverged::Apart);
                      }));
     long diverged = 0;
     for (const auto& run : stats) diverged += run[f].diverged ? 1 : 0;

@@ -52,12 +52,22 @@ struct FilterRun {
 }  // namespace
 
 int LinearPlantScenario::uncertainty_blocks() const {
+  if (!truth_parameters.empty()) return static_cast<int>(truth_parameters.size());
   return plant.uncertain() ? static_cast<int>(plant.F_block_ranges().size()) : 0;
 }
 
 MatrixXd LinearPlantScenario::truth_A(const VectorXd& delta) const {
   if (!plant.uncertain()) return plant.A;
   MatrixXd F = MatrixXd::Zero(plant.j(), plant.k());
+  if (!truth_parameters.empty()) {  // diag(δᵢ I_{sᵢ}) over the parameters' columns (138)
+    Eigen::Index at = 0;
+    for (std::size_t i = 0; i < truth_parameters.size(); ++i) {
+      const Eigen::Index s = truth_parameters[i].columns;
+      F.block(at, at, s, s).diagonal().setConstant(delta(static_cast<Eigen::Index>(i)));
+      at += s;
+    }
+    return plant.A + plant.H * F * plant.E;
+  }
   Eigen::Index b = 0;
   for (const auto& [at, size] : plant.F_block_ranges()) {  // structured: square blocks; else one j×k Ē
     const Eigen::Index rows = plant.structured() ? size : plant.j(), cols = plant.structured() ? size : plant.k();
@@ -68,11 +78,21 @@ MatrixXd LinearPlantScenario::truth_A(const VectorXd& delta) const {
 
 namespace {
 
-// The run's δ per block: the scenario's one value, or each uniform on [−1, 1].
+// The run's δ per scalar: per named parameter (pᵢ − νᵢ)/rᵢ at its value or at one drawn on its
+// range; per block the scenario's one value, or each uniform on [−1, 1].
 VectorXd draw_delta(const LinearPlantScenario& s, std::uint64_t seed) {
+  Rng rng(derive_seed(seed, kUncertaintyStream));
+  if (!s.truth_parameters.empty()) {
+    VectorXd delta(s.uncertainty_blocks());
+    for (Eigen::Index i = 0; i < delta.size(); ++i) {
+      const TruthParameter& p = s.truth_parameters[static_cast<std::size_t>(i)];
+      const double value = p.value ? *p.value : p.low + (p.high - p.low) * rng.uniform01();
+      delta(i) = (value - p.nominal) / p.radius;
+    }
+    return delta;
+  }
   VectorXd delta = VectorXd::Constant(s.uncertainty_blocks(), s.uncertainty_delta);
   if (!s.random_uncertainty) return delta;
-  Rng rng(derive_seed(seed, kUncertaintyStream));
   for (Eigen::Index b = 0; b < delta.size(); ++b) delta(b) = 2 * rng.uniform01() - 1;
   return delta;
 }

@@ -2,6 +2,7 @@
 // strict YAML reader; the gains each filter names are obtained here (gains_source.hpp).
 #include "hinf/sim/linear_plant_scenario_yaml.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -26,9 +27,47 @@ void read_noise(const YamlMap& top, LinearPlantScenario& s) {
   s.initial_state_std = standard_deviation(m, "initial_state_std", s.initial_state_std, 1.0, ZeroSigma::Allowed);
 }
 
-void read_truth(const YamlMap& top, LinearPlantScenario& s) {
+// Column names runs.csv already has: a parameter may not take one (linear_plant_report.cpp).
+const std::vector<std::string> kRunsColumns{"run", "seed", "filter", "error_rms", "predicted_error_rms", "error_max",
+                                            "diverged"};
+
+// truth.parameters: {NAME: value | random} over the config's named parameters that enter A;
+// the others at their nominal.
+void read_truth_parameters(const YamlMap& truth, const hinf::synth::SynthConfig& config, LinearPlantScenario& s) {
+  std::vector<std::string> names;
+  for (const auto& b : config.parameter_blocks) names.push_back(b.parameter.name);
+  if (names.empty())
+    truth.fail("parameters", "the config names no parameter that enters system.A (`parameters:`, docs/file-formats.md)");
+  const YamlMap m = truth.map("parameters", names);
+  for (const auto& b : config.parameter_blocks) {
+    const hinf::synth::UncertainParameter& p = b.parameter;
+    TruthParameter t{p.name, p.nominal, p.radius(), p.low, p.high, b.columns, p.nominal};
+    if (std::find(kRunsColumns.begin(), kRunsColumns.end(), p.name) != kRunsColumns.end())
+      m.fail(p.name, "a parameter named as a column of runs.csv; rename it in the config");
+    if (m.has(p.name)) {
+      const YAML::Node v = m.get(p.name);
+      if (v.IsScalar() && v.Scalar() == "random") {
+        t.value.reset();
+      } else {
+        t.value = m.finite(p.name);
+        if (*t.value < p.low || *t.value > p.high)
+          m.fail_value(p.name, *t.value, "must lie in the parameter's range [" + number_text(p.low) + ", " +
+                                             number_text(p.high) + "], or be `random` (drawn per run on it)");
+      }
+    }
+    s.truth_parameters.push_back(t);
+  }
+}
+
+void read_truth(const YamlMap& top, const hinf::synth::SynthConfig& config, LinearPlantScenario& s) {
   if (!top.has("truth")) return;
-  const YamlMap m = top.map("truth", {"uncertainty_delta"});
+  const YamlMap m = top.map("truth", {"uncertainty_delta", "parameters"});
+  if (m.has("parameters")) {
+    if (m.has("uncertainty_delta"))
+      m.fail("parameters", "give the truth by uncertainty_delta or by parameters, not both");
+    read_truth_parameters(m, config, s);
+    return;
+  }
   if (!m.has("uncertainty_delta")) return;
   if (!s.plant.uncertain())
     m.fail("uncertainty_delta", "the config's plant has no uncertainty (`uncertainty:` or `parameters:`)");
@@ -121,7 +160,7 @@ LinearPlantExperiment parse_linear_plant_scenario(const std::string& text, const
   s.duration = top.positive("duration");
   require_whole_samples(top, s.duration, s.sample_time);
   read_noise(top, s);
-  read_truth(top, s);
+  read_truth(top, config, s);
   read_metrics(top, s, e.options);
   GainsReader gains{config, std::nullopt, std::nullopt};
   read_named_filters(top, static_cast<std::size_t>(kMaxLinearPlantFilters), "hinf, kalman",

@@ -262,6 +262,7 @@ std::string format_manoeuvring_summary_json(const ManoeuvringExperiment& e,
                                             const std::string& scenario_path, std::uint64_t seed) {
   Json j = summary_header(scenario_path, seed, stats.size(), e.scenario.duration);
   j["scenario_family"] = "manoeuvring_target";
+  j["headline_metrics"] = {"detection_delay_s", "false_alarm_rate", "final_position_error_m"};  // end-of-run table
   j["noise"] = e.scenario.noise;
   Json windows = Json::object();
   for (const MetricWindow& w : e.options.windows) windows[w.name] = {json_num(w.start), json_num(w.end)};

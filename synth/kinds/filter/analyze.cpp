@@ -17,10 +17,35 @@ double norm_or_inf(const StateSpace& es, double rho, double* peak = nullptr) {
   if (peak) *peak = h.peak_frequency;
   return h.norm;
 }
+
+// The worst case over the named parameters' own box (docs/maths.md §24): δᵢ over
+// [(loᵢ − νᵢ)/rᵢ, (hiᵢ − νᵢ)/rᵢ], reported as the parameters' values.
+void add_worst_parameters(FilterAnalysis& a, const Plant& plant, const std::vector<ParameterBlock>& parameters,
+                          const Filter& filter, const Settings& settings) {
+  const auto K = static_cast<Eigen::Index>(parameters.size());
+  Eigen::VectorXd lower(K), upper(K);
+  std::vector<int> sizes;
+  for (Eigen::Index i = 0; i < K; ++i) {
+    const ParameterBlock& p = parameters[static_cast<std::size_t>(i)];
+    lower(i) = p.delta_of(p.parameter.low);
+    upper(i) = p.delta_of(p.parameter.high);
+    sizes.push_back(p.columns);
+  }
+  const certify::WorstCaseOverBox w =
+      certify::worst_case_gain_over_box(plant, filter, sizes, lower, upper, settings.stability_samples);
+  for (Eigen::Index i = 0; i < K; ++i) {
+    const ParameterBlock& p = parameters[static_cast<std::size_t>(i)];
+    a.worst_parameters.push_back({p.parameter.name, p.value_at(w.delta(i))});
+  }
+  a.worst_parameters_gain = w.gain;
+  a.worst_parameters_evaluations = w.evaluations;
+}
+
 }  // namespace
 
 FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantSpec>& hill,
-                              const Filter& filter, const Settings& settings, int delta_points) {
+                              const std::vector<ParameterBlock>& parameters, const Filter& filter,
+                              const Settings& settings, int delta_points) {
   validate_plant(plant);
   FilterAnalysis a;
   const StateSpace es = certify::error_system(plant, filter);
@@ -45,6 +70,7 @@ FilterAnalysis analyze_filter(const Plant& plant, const std::optional<HillPlantS
     a.worst_F = w.worst_F;
     a.worst_F_evaluations = w.evaluations;
   }
+  if (!parameters.empty()) add_worst_parameters(a, plant, parameters, filter, settings);
   if (hill && hill->delta_bar > 0 && delta_points >= 2) {
     for (int i = 0; i < delta_points; ++i) {
       DeltaPoint d;

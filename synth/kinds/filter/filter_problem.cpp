@@ -26,7 +26,7 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
 
   AnalysisOutcome analyze(const std::string& gains_path, const AnalysisOptions& options) const override {
     const Loaded in = load(gains_path);
-    FilterAnalysis a = analyze_filter(cfg_.plant, cfg_.hill, in.filter, cfg_.settings, options.delta_points);
+    FilterAnalysis a = analyze_filter(cfg_.plant, cfg_.hill, cfg_.parameter_blocks, in.filter, cfg_.settings, options.delta_points);
     return {filter_report::analysis(gains_path, in.gains, a, cfg_.sample_time(), cfg_.plant.uncertain()),
             filter_report::analysis_json(cfg_.path, gains_path, in.gains, a, cfg_.sample_time()), std::move(a)};
   }

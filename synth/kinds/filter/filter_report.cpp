@@ -132,6 +132,12 @@ std::string analysis(const std::string& gains_path, const runtime_yaml::GainsFil
     out += "worst case found           " + num(a.worst_F_gain) + " at a constant admissible F (" +
            std::to_string(a.worst_F_evaluations) + " norms; sampled, then a local search): the worst-case gain lies in [" +
            num(a.worst_F_gain) + ", " + num(a.robust_bound) + "]\n";
+  if (!a.worst_parameters.empty()) {
+    std::string at;
+    for (const auto& p : a.worst_parameters) at += (at.empty() ? "" : ", ") + p.name + " = " + num(p.value);
+    out += "worst case in the box      " + num(a.worst_parameters_gain) + " at " + at + " (" +
+           std::to_string(a.worst_parameters_evaluations) + " norms over the parameters' ranges, design model)\n";
+  }
   if (!a.delta_grid.empty())
     out += "worst case on delta grid   " + num(a.worst_delta_hinf_norm) + " at delta = " + num(a.worst_delta) + " (" +
            std::to_string(a.delta_grid.size()) + " points, exact plant)\n";
@@ -160,6 +166,13 @@ std::string analysis_json(const std::string& config_path, const std::string& gai
     }
     j["worst_F"] = std::move(rows);
     j["worst_F_evaluations"] = a.worst_F_evaluations;
+  }
+  if (!a.worst_parameters.empty()) {
+    Json values = Json::object();
+    for (const auto& p : a.worst_parameters) values[p.name] = json_num(p.value);
+    j["worst_parameters"] = std::move(values);
+    j["worst_parameters_gain"] = json_num(a.worst_parameters_gain);
+    j["worst_parameters_evaluations"] = a.worst_parameters_evaluations;
   }
   if (!a.delta_grid.empty()) {
     j["worst_delta"] = json_num(a.worst_delta);

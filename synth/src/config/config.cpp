@@ -98,7 +98,7 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
   try {
     if (system) {
       const ParameterModel model = read_parameter_sections(reader, constants, parameters, root["uncertainty_blocks"]);
-      config.plant = read_system_section(reader, system, uncertainty, config.sampling, model);
+      config.plant = read_system_section(reader, system, uncertainty, config.sampling, model, config.parameter_blocks);
       located(reader, root, system_key, [&] { validate_plant(config.plant); });
       if (config.sampling)
         located(reader, root, system_key, [&] { config.plant = sample_plant(config.plant, *config.sampling); });

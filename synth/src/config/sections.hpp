@@ -26,9 +26,11 @@ struct ParameterModel {
   std::vector<UncertainParameter> parameters;
   bool block_per_parameter = true;  // uncertainty_blocks: per_parameter (true) | full (docs/maths.md §23)
 };
+// `parameter_blocks`: the named parameters that enter A, with their columns of H (empty
+// without `parameters:`).
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling,
-                          const ParameterModel& model);
+                          const ParameterModel& model, std::vector<ParameterBlock>& parameter_blocks);
 
 // `constants:` {name: number} and `parameters:` {name: {nominal, range: [low, high]}}; either
 // node may be undefined. Names are identifiers, each declared once.

@@ -72,7 +72,8 @@ std::optional<SamplingSpec> read_sampling(const YamlReader& reader, const YAML::
 }
 
 // `system:` with constants and parameters: H, E from A's parameter coefficients.
-Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system, const ParameterModel& model) {
+Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system, const ParameterModel& model,
+                             std::vector<ParameterBlock>& parameter_blocks) {
   const auto required = [&](const char* key, const char* what) {
     if (!system[key]) reader.fail(system, std::string("missing key 'system.") + key + "' (" + what + ")");
     return system[key];
@@ -93,6 +94,7 @@ Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system,
   plant.H = f.H;
   plant.E = f.E;
   if (model.block_per_parameter) plant.F_blocks = f.blocks;  // one multiplier per parameter (§23)
+  parameter_blocks = f.parameter_blocks;
   return plant;
 }
 
@@ -100,11 +102,11 @@ Plant read_parametric_system(const YamlReader& reader, const YAML::Node& system,
 
 Plant read_system_section(const YamlReader& reader, const YAML::Node& system,
                           const YAML::Node& uncertainty, std::optional<SamplingSpec>& sampling,
-                          const ParameterModel& model) {
+                          const ParameterModel& model, std::vector<ParameterBlock>& parameter_blocks) {
   reader.check_map(system, "system",
                    {"A", "B", "C", "D", "L", "G", "sample_time", "discretisation", "process_noise"});
   sampling = read_sampling(reader, system);
-  if (!model.symbols.empty()) return read_parametric_system(reader, system, model);
+  if (!model.symbols.empty()) return read_parametric_system(reader, system, model, parameter_blocks);
   Plant plant;
   plant.A = required_matrix(reader, system, "system", "A", "n x n state matrix");
   plant.B = required_matrix(reader, system, "system", "B", "n x p process-noise input");

@@ -3,6 +3,7 @@
 // bounds it from above (docs/maths.md §24).
 #pragma once
 #include <Eigen/Dense>
+#include <vector>
 
 #include "hinf/models/plant.hpp"
 
@@ -19,5 +20,21 @@ struct WorstCaseGain {
   int evaluations = 0;      // H∞ norms computed
 };
 WorstCaseGain worst_case_gain(const Plant& plant, const Filter& filter, int random_samples, unsigned seed);
+
+
+// The same over a box of scalars: F = diag(δ₁ I_{s₁}, …, δ_K I_{s_K}) (Σ s_b = j = k) with
+// lower_b ≤ δ_b ≤ upper_b inside [−1, 1] — named parameters' own box (docs/maths.md §22, §24),
+// a subset of the admissible F. Found by the box's centre and vertices (all of them up to
+// kMaxBoxVertexDimension scalars), a Halton sample of `samples` points, and a compass search
+// from the best (each scalar moved by ± a step of its width, the step halved when no move
+// gains). +inf (with that δ) if some δ makes the error system unstable.
+inline constexpr int kMaxBoxVertexDimension = 10;
+struct WorstCaseOverBox {
+  double gain = 0;        // σ_max at the peak frequency for δ (a lower value of ‖·‖∞ there)
+  Eigen::VectorXd delta;  // K: the worst scalars found
+  int evaluations = 0;    // H∞ norms computed
+};
+WorstCaseOverBox worst_case_gain_over_box(const Plant& plant, const Filter& filter, const std::vector<int>& sizes,
+                                          const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, int samples);
 
 }  // namespace hinf::certify

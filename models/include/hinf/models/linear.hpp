@@ -8,10 +8,12 @@
 
 namespace hinf::models {
 
+// A fixed dimension must be positive; Eigen::Dynamic sizes by the matrices given.
+constexpr bool valid_dimension(int n) { return n > 0 || n == Eigen::Dynamic; }
+
 template <int NX_, int NU_>
 class LinearModel {
-  static_assert((NX_ > 0 || NX_ == Eigen::Dynamic) && (NU_ > 0 || NU_ == Eigen::Dynamic),
-                "LinearModel: dimensions must be positive (or Eigen::Dynamic)");
+  static_assert(valid_dimension(NX_) && valid_dimension(NU_), "LinearModel: dimensions must be positive (or Dynamic)");
 
  public:
   static constexpr int NX = NX_;
@@ -34,8 +36,7 @@ class LinearModel {
 
 template <int NX_, int NZ_>
 class LinearMeasurement {
-  static_assert((NX_ > 0 || NX_ == Eigen::Dynamic) && (NZ_ > 0 || NZ_ == Eigen::Dynamic),
-                "LinearMeasurement: dimensions must be positive (or Eigen::Dynamic)");
+  static_assert(valid_dimension(NX_) && valid_dimension(NZ_), "LinearMeasurement: dimensions must be positive");
 
  public:
   static constexpr int NX = NX_;

@@ -28,6 +28,9 @@ struct CampaignRequest {
   std::optional<double> duration;   // overrides the scenario's (one rule: sim/scenario.hpp)
   StatusLog log;                    // status lines ("synthesising from PATH ..."), or none
   std::function<void(long done, long total)> progress;  // Monte-Carlo progress, or none
+  // Announces each further campaign of a family that runs several (gps_ins_relative's table 1:
+  // "campaign 2 of 3: table 1 at inertia_products_fraction = 0.3") before its progress; or none.
+  std::function<void(const std::string& label)> on_campaign;
   // Polled before each Monte-Carlo run; true: no further run starts, and simulate() throws
   // SimulationError "interrupted" once the runs under way have ended (a front end's Ctrl-C).
   std::function<bool()> interrupted;

@@ -8,8 +8,10 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "hinf/synth/hill_plant.hpp"
+#include "hinf/synth/parametric_uncertainty.hpp"
 #include "hinf/synth/validate_plant.hpp"
 #include "hinf/synth/sampled_plant.hpp"
 #include "hinf/synth/settings.hpp"
@@ -21,6 +23,7 @@ struct SynthConfig {
   Plant plant;                     // validated (validate_plant); discrete (sampled if given in continuous time)
   std::optional<SamplingSpec> sampling;  // set iff `system:` was continuous-time (sample_time)
   std::optional<HillPlantSpec> hill;   // set iff the config used `hill:`
+  std::vector<ParameterBlock> parameter_blocks;  // `parameters:` that enter A, with their columns of H (§22)
   Settings settings;               // defaults overridden by `solver:`; validated
   KalmanNoise kalman_noise;        // `kalman: {Q, R}` (hinf-synth kalman, compare); empty: from B, D
   std::string sha256;              // SHA-256 of the config's exact bytes, lowercase hex
@@ -42,5 +45,15 @@ SynthConfig parse_config(const std::string& yaml_text, const std::string& source
 // InvalidInput naming the key if the config has no such key or it does not hold a plain number.
 std::string with_value(const std::string& yaml_text, const std::string& source_name, const std::string& key_path,
                        double value);
+
+// The names of the config's named parameters (`parameters: {name: …}`, §22), in file order.
+std::vector<std::string> parameter_names(const std::string& yaml_text, const std::string& source_name);
+
+// The config text with the named parameter `name` at `value` (docs/maths.md §21): its nominal
+// (the design point) becomes `value` and its range moves with it, its offsets from the nominal
+// unchanged; everything else byte for byte. Error InvalidInput naming the key if the
+// parameter's range or nominal is not written as plain numbers.
+std::string with_parameter_value(const std::string& yaml_text, const std::string& source_name,
+                                 const std::string& name, double value);
 
 }  // namespace hinf::synth

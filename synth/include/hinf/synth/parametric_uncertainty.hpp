@@ -16,6 +16,16 @@ struct UncertainParameter {
   double radius() const;
 };
 
+// A parameter that enters A and its place in F = diag(δ₁ I_{s₁}, …): its s columns of H,
+// in the order of the parameters (docs/maths.md (138)).
+struct ParameterBlock {
+  UncertainParameter parameter;
+  int columns = 0;
+  // δ = (p − ν)/r ↔ p; the range [low, high] is δ ∈ [(low − ν)/r, (high − ν)/r] ⊆ [−1, 1] (137)
+  double value_at(double delta) const { return parameter.nominal + delta * parameter.radius(); }
+  double delta_of(double value) const { return (value - parameter.nominal) / parameter.radius(); }
+};
+
 // H, E with F = diag(δᵢ I) (δᵢ = (pᵢ − νᵢ)/rᵢ ∈ [−1, 1]) inside the full block ‖F‖ ≤ 1: per
 // parameter, Aᵢ = Aᵢ[:, P] X with P the columns of Aᵢ that are not combinations of the
 // columns before them (a column skeleton), giving H's columns Aᵢ[:, P] and E's rows rᵢ X
@@ -25,6 +35,7 @@ struct UncertaintyFactors {
   Eigen::MatrixXd H;  // n×j
   Eigen::MatrixXd E;  // j×n
   std::vector<int> blocks;  // F's block per parameter (Plant::F_blocks); empty when one parameter enters
+  std::vector<ParameterBlock> parameter_blocks;  // the parameters that enter, with their columns
 };
 UncertaintyFactors uncertainty_from_parameters(const std::vector<Eigen::MatrixXd>& coefficients,
                                                const std::vector<UncertainParameter>& parameters, Eigen::Index n);

@@ -16,13 +16,17 @@
 
 namespace hinf::synth {
 
-// What a sweep varies. `delta_bar` names hill.delta_bar; `uncertainty_scale` multiplies
-// the uncertainty's E (1 = the config as written: for a plant whose E carries the bound δ̄,
-// the value scales δ̄); any other name is a key path of the config holding a plain number
-// ("hill.sample_time", "solver.backoff").
+// What a sweep varies (docs/maths.md §21). A named parameter of the config (`parameters:`,
+// §22) is its design point in its own units: the nominal becomes the value and the range moves
+// with it. `delta_bar` names hill.delta_bar; `uncertainty_scale` multiplies the uncertainty's E
+// (1 = the config as written: for a plant whose E carries the bound δ̄, the value scales δ̄);
+// any other name is a key path of the config holding a plain number ("hill.sample_time",
+// "solver.backoff"). A named parameter wins over the two words.
 struct SweepParameter {
+  enum class Kind { KeyPath, UncertaintyScale, NamedParameter };
   std::string name;      // as the user wrote it
-  std::string key_path;  // the config key it replaces (empty for uncertainty_scale)
+  std::string key_path;  // the config key it replaces (Kind::KeyPath)
+  Kind kind = Kind::KeyPath;
 };
 // Error InvalidInput naming the parameter if the config has no such number.
 SweepParameter resolve_sweep_parameter(const std::string& name, const std::string& yaml_text,
@@ -50,10 +54,13 @@ const char* sweep_outcome_word(ErrorCode outcome);
 // `synthesize` at each value, in order. A point's failure to solve is recorded, never
 // thrown; a value that makes the config invalid is Error InvalidInput before any solve.
 // `interrupted`: the solver's poll (sdp::Options::interrupted); once true, every point left
-// ends at once as a numerical failure "… interrupted".
+// ends at once as a numerical failure "… interrupted". `on_point`: called with each point as
+// it ends (a front end's progress).
+using SweepPointObserver = std::function<void(const SweepPoint&)>;
 std::vector<SweepPoint> sweep(const SweepParameter& parameter, const std::vector<double>& values,
                               const std::string& yaml_text, const std::string& source_name,
-                              const std::function<bool()>& interrupted = nullptr);
+                              const std::function<bool()>& interrupted = nullptr,
+                              const SweepPointObserver& on_point = nullptr);
 
 // lo:step:hi as the user writes it (step > 0, lo ≤ hi; hi included to a rounding of step);
 // Error InvalidInput naming `option` otherwise. At most kMaxSweepPoints values.
@@ -76,6 +83,7 @@ struct FeasibilitySearch {
 };
 FeasibilitySearch max_feasible(const SweepParameter& parameter, double lo, double hi, double tolerance,
                                const std::string& yaml_text, const std::string& source_name,
-                               const std::function<bool()>& interrupted = nullptr);
+                               const std::function<bool()>& interrupted = nullptr,
+                               const SweepPointObserver& on_point = nullptr);
 
 }  // namespace hinf::synth

@@ -18,11 +18,21 @@
 
 namespace hinf::sim {
 
+// A named parameter of the config in the truth (`truth.parameters`, docs/maths.md §33): its
+// value pᵢ, or drawn per run uniformly on its range; δᵢ = (pᵢ − νᵢ)/rᵢ scales its columns of H (137).
+struct TruthParameter {
+  std::string name;
+  double nominal = 0, radius = 1, low = 0, high = 0;  // νᵢ, rᵢ, its range
+  int columns = 0;                                    // sᵢ: its columns of H (138)
+  std::optional<double> value;                        // pᵢ; unset: drawn per run in [low, high]
+};
+
 // The truth, docs/maths.md (227): x(k+1) = A_δ x(k) + B w(k), y(k) = C x(k) + D v(k),
 // z(k) = L x(k), with w(k) ~ N(0, σ_w² I_p), v(k) ~ N(0, σ_v² I_q), x(0) ~ N(0, σ_0² I_n) and
-// A_δ = A + H F_δ E, F_δ = diag(δ_b Ē_b) over F's blocks b (Ē_b: ones on its diagonal; one
-// block j×k when F is not structured), every |δ_b| ≤ 1: one δ for all blocks, or each drawn
-// per run uniformly on [−1, 1]. A known input of the plant (G) is zero.
+// A_δ = A + H F_δ E. Without `truth.parameters`, F_δ = diag(δ_b Ē_b) over F's blocks b (Ē_b:
+// ones on its diagonal; one block j×k when F is not structured), every |δ_b| ≤ 1: one δ for
+// all blocks, or each drawn per run uniformly on [−1, 1]. With it, F_δ = diag(δᵢ I_{sᵢ}) over
+// the named parameters that enter A (§22), each at its value. A known input (G) is zero.
 struct LinearPlantScenario {
   Plant plant;              // the config's, discrete (sampled by the config if given in continuous time)
   std::string config_path;  // resolved
@@ -31,8 +41,9 @@ struct LinearPlantScenario {
   double process_std = 1, measurement_std = 1, initial_state_std = 0;  // σ_w, σ_v, σ_0
   double uncertainty_delta = 0;                                       // δ of every block …
   bool random_uncertainty = false;                                    // … or each δ_b drawn per run
-  int uncertainty_blocks() const;                                     // F's blocks (0: a certain plant)
-  Eigen::MatrixXd truth_A(const Eigen::VectorXd& delta) const;        // A_δ, δ: one per block
+  std::vector<TruthParameter> truth_parameters;                       // … or δ per named parameter
+  int uncertainty_blocks() const;        // the run's δ scalars: parameters, else F's blocks (0: certain)
+  Eigen::MatrixXd truth_A(const Eigen::VectorXd& delta) const;        // A_δ, δ: one per scalar
 };
 
 // One filter of the experiment and where its gains come from.
@@ -53,7 +64,7 @@ struct LinearPlantSample {
 
 // One filter in one run, over the steady-state window: the RMS and the largest of |z − ẑ|
 // (Euclidean over the l entries), NaN once the filter's estimate became non-finite; the RMS
-// predicted for the run's truth (229), NaN if not stationary; the run's δ per block of F.
+// predicted for the run's truth (229), NaN if not stationary; the run's δ per scalar.
 struct LinearPlantStatistics {
   double error_rms = std::numeric_limits<double>::quiet_NaN();
   double error_max = std::numeric_limits<double>::quiet_NaN();
