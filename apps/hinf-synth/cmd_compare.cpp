@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "hinf/common/atomic_file.hpp"
 #include "hinf/common/gnuplot.hpp"  // gnuplot_quoted
+#include "hinf/common/number_text.hpp"
 #include "hinf/synth/api.hpp"  // json_schema
 #include "hinf/synth/comparison.hpp"
 
@@ -26,16 +27,23 @@ std::string sigma_csv(const synth::Comparison& c, std::optional<double> T) {
 // The Kalman filter set beside the given one: the predictor, or x̂(k|k) beside a filtered estimate.
 const char* kalman_name(bool filtered) { return filtered ? "Kalman filter x_hat(k|k)" : "Kalman predictor"; }
 
+// gamma: the gains file's certified bound, drawn as a horizontal line (the σ curve of the
+// filter stays below it on the nominal plant; the robust bound covers every admissible F).
 std::string sigma_plot_script(const std::string& data, const std::string& png, const std::string& gains, bool hz,
-                              bool filtered) {
+                              bool filtered, std::optional<double> gamma) {
   std::ostringstream gp;
   const std::string x = hz ? "2" : "1";
   gp << "set terminal pngcairo size 900,520 enhanced font 'Sans,11'\nset output " << gnuplot_quoted(png) << "\n"
      << "set grid\nset key top left\nset logscale xy\nset datafile separator ','\n"
      << "set xlabel " << (hz ? "'frequency (Hz)'" : "'frequency (rad/sample)'") << "\n"
      << "set ylabel 'largest singular value of the error system'\n"
-     << "set title 'estimation error gain: the filter beside the " << kalman_name(filtered) << "' noenhanced\n"
-     << "plot " << gnuplot_quoted(data) << " every ::1 using " << x << ":3 with lines lw 2 lc rgb '#d62728' title "
+     << "set title 'estimation error gain: the filter beside the " << kalman_name(filtered) << "' noenhanced\n";
+  if (gamma)
+    gp << "set arrow from graph 0, first " << significant_text(*gamma, 17) << " to graph 1, first "
+       << significant_text(*gamma, 17) << " nohead dt 2 lw 1.5 lc rgb '#d62728'\n"
+       << "set label " << gnuplot_quoted("certified gamma = " + num(*gamma)) << " at graph 0.99, first "
+       << significant_text(*gamma, 17) << " right offset 0,0.7 tc rgb '#d62728' noenhanced\n";
+  gp << "plot " << gnuplot_quoted(data) << " every ::1 using " << x << ":3 with lines lw 2 lc rgb '#d62728' title "
      << gnuplot_quoted(gains) << " noenhanced, " << gnuplot_quoted(data) << " every ::1 using " << x
      << ":4 with lines lw 2 lc rgb '#1f77b4' title '" << kalman_name(filtered) << "' noenhanced\nset output\n";
   return gp.str();
@@ -120,7 +128,7 @@ void add_compare(CLI::App& app, Action& action) {
       if (!plot->empty())
         stage("drew " + *plot, [&] {
           const auto script = [&](const std::string& d, const std::string& png) {
-            return sigma_plot_script(d, png, args->gains, T.has_value(), in.filter.filtered());
+            return sigma_plot_script(d, png, args->gains, T.has_value(), in.filter.filtered(), in.gains.gamma);
           };
           write_png_by_gnuplot(*plot, data, script, {args->config, args->gains});
         });

@@ -2,6 +2,8 @@
 // family_registry.cpp, and the Monte-Carlo campaign with a request's runs, jobs, seed and
 // progress.
 #pragma once
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hinf/sim/family.hpp"
@@ -22,6 +24,12 @@ template <class Stats, class Sample, class RunOne>
 std::vector<std::vector<Stats>> campaign(const CampaignRequest& r, std::vector<std::vector<Sample>>* samples,
                                          const RunOne& run_one) {
   return run_family_campaign<Stats, Sample>(r.runs, r.jobs, r.seed, samples, run_one, r.progress, r.interrupted);
+}
+
+// The plots' titles (issue "A tool people enjoy"): the scenario file's stem, the seed and the
+// run count ("gps-ins-flyaround, seed 1, 20 runs"); a family's figures say what they show.
+inline std::string plot_title(const std::string& stem, std::uint64_t seed, long runs) {
+  return stem + ", seed " + std::to_string(seed) + ", " + std::to_string(runs) + (runs == 1 ? " run" : " runs");
 }
 
 }  // namespace hinf::sim::families

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hinf::sim {
 namespace {
@@ -91,6 +92,21 @@ MetricStats compute_stats(const std::vector<std::optional<double>>& values) {
     if (v) ss += (*v - s.mean) * (*v - s.mean);
   s.std = s.count > 1 ? std::sqrt(ss / (s.count - 1)) : 0.0;
   return s;
+}
+
+std::vector<double> moving_rms_samples(const std::vector<double>& x, long window, long stride) {
+  std::vector<double> out;
+  double sum = 0;  // of the squares in the window; NaN once a NaN entered it (and after)
+  bool nan = false;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    nan = nan || std::isnan(x[k]);
+    sum += x[k] * x[k];
+    if (k >= static_cast<std::size_t>(window)) sum -= x[k - static_cast<std::size_t>(window)] * x[k - static_cast<std::size_t>(window)];
+    if (k % static_cast<std::size_t>(stride) != 0) continue;
+    const double n = static_cast<double>(std::min<std::size_t>(k + 1, static_cast<std::size_t>(window)));
+    out.push_back(nan ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(std::max(sum, 0.0) / n));
+  }
+  return out;
 }
 
 double nearest_rank_quantile(std::vector<double> values, double q) {

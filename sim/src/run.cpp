@@ -2,6 +2,7 @@
 
 #include <hinf/models/range_azimuth_elevation.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -79,6 +80,14 @@ Vector3 thrust(const Scenario& s, const Vector6& x, const Vector6& hinf_estimate
 
 }  // namespace
 
+PlotTraceSettings plot_trace_settings(const Scenario& s) {
+  PlotTraceSettings p;
+  p.window_s = s.converge_window_s > 0 ? s.converge_window_s : s.duration / 100;
+  p.window = std::max(1L, std::lround(p.window_s / s.sample_time));
+  p.stride = std::max(1L, (s.steps() + kPlotTracePoints - 1) / kPlotTracePoints);
+  return p;
+}
+
 RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_trajectory) {
   const Scenario& s = setup.scenario;
   const long steps = s.steps();
@@ -139,11 +148,14 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
   RunResult result;
   result.seed = run_seed;
   const MetricSettings ms = s.metric_settings();
+  const PlotTraceSettings plot = plot_trace_settings(s);
+  for (long k = 0; k < steps; k += plot.stride) result.trace_t.push_back(traj.t[static_cast<std::size_t>(k)]);
   for (std::size_t f = 0; f < nf; ++f) {
     traj.filters[f].health = estimators[f]->health();
     result.filters.push_back(
         {names[f], compute_metrics(traj.t, rec.pos_err[f], rec.vel_err[f], traj.filters[f].diverged_at, ms),
-         estimators[f]->health()});
+         estimators[f]->health(), moving_rms_samples(rec.pos_err[f], plot.window, plot.stride),
+         moving_rms_samples(rec.vel_err[f], plot.window, plot.stride)});
   }
   if (keep_trajectory) result.trajectory = std::move(traj);
   return result;

@@ -87,8 +87,10 @@ class StreamFamily final : public Family {
     if (f_.extra) f_.extra(r, *e, stats, out.files);
     if (f_.inputs) out.inputs = f_.inputs(*e);
     out.plots = e->plots;
-    out.draw_plots = [e, samples, plots = o.plots](const std::string& dir, const std::string& title,
-                                                    AtomicFileSet& outputs) { plots(dir, *e, *samples, title, outputs); };
+    out.draw_plots = [e, samples, plots = o.plots, seed = r.seed, runs = r.runs](
+                         const std::string& dir, const std::string& title, AtomicFileSet& outputs) {
+      plots(dir, *e, *samples, plot_title(title, seed, runs), outputs);
+    };
     return out;
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hinf/sim/metrics.hpp"
+#include "hinf/sim/plots.hpp"
 
 namespace {
 
@@ -100,6 +101,44 @@ TEST(Metrics, StatsOfIdenticalValuesAreExact) {
   EXPECT_EQ(s.mean, 0.1);
   EXPECT_EQ(s.std, 0.0);
   EXPECT_EQ(s.count, 3);
+}
+
+// The plots' moving RMS (docs/experiments.md "Plots"): a window of w samples (fewer at the
+// start), taken every stride-th sample, NaN from the first NaN on; its closed forms on a step
+// and a constant.
+TEST(Metrics, MovingRmsOfAStepAndOfAConstant) {
+  const std::vector<double> step{0, 0, 3, 3, 3, 3};
+  const std::vector<double> r = hinf::sim::moving_rms_samples(step, 2, 1);
+  ASSERT_EQ(r.size(), 6u);
+  EXPECT_EQ(r[0], 0.0);
+  EXPECT_EQ(r[1], 0.0);
+  EXPECT_NEAR(r[2], std::sqrt(9.0 / 2), 1e-15);  // {0, 3}
+  EXPECT_NEAR(r[3], 3.0, 1e-15);                  // {3, 3}
+  const std::vector<double> every2 = hinf::sim::moving_rms_samples(step, 2, 2);
+  ASSERT_EQ(every2.size(), 3u);  // samples 0, 2, 4
+  EXPECT_NEAR(every2[2], 3.0, 1e-15);
+  const std::vector<double> c = hinf::sim::moving_rms_samples(std::vector<double>(100, -2.0), 10, 7);
+  for (double v : c) EXPECT_NEAR(v, 2.0, 1e-14);
+  const std::vector<double> diverged = hinf::sim::moving_rms_samples({1, 1, std::nan(""), 1}, 1, 1);
+  EXPECT_EQ(diverged[1], 1.0);
+  EXPECT_TRUE(std::isnan(diverged[2]) && std::isnan(diverged[3]));
+}
+
+// The plots' band over the runs: nearest-rank 5 %, 50 %, 95 % of the runs' values that are not
+// NaN at each instant (20 runs valued 1…20: the 1st, 10th and 19th), NaN where all are.
+TEST(Metrics, TraceBandIsTheRunsQuantilesPerInstant) {
+  std::vector<std::vector<double>> runs;
+  for (int r = 1; r <= 20; ++r) runs.push_back({static_cast<double>(r), r == 3 ? std::nan("") : 1.0, std::nan("")});
+  std::vector<const std::vector<double>*> pointers;
+  for (const auto& r : runs) pointers.push_back(&r);
+  const hinf::sim::TraceBand b = hinf::sim::trace_band(pointers);
+  ASSERT_EQ(b.median.size(), 3u);
+  EXPECT_EQ(b.p05[0], 1.0);
+  EXPECT_EQ(b.median[0], 10.0);
+  EXPECT_EQ(b.p95[0], 19.0);
+  EXPECT_EQ(b.p05[1], 1.0);  // 19 values, the NaN run left out
+  EXPECT_EQ(b.p95[1], 1.0);
+  EXPECT_TRUE(std::isnan(b.median[2]));
 }
 
 }  // namespace

@@ -63,8 +63,8 @@ std::string plot_data(const GpsInsExperiment& e, const std::vector<std::vector<G
   return out;
 }
 
-// One png per figure, three panels (the components), each filter's error (solid) and ±3σ
-// (dashed) in one colour.
+// One png per figure, three panels (the components), each filter's error (its own dash type:
+// solid, dashed, dotted, …) and ±3σ (thin, dashed) in one colour.
 std::string plot_script(const GpsInsExperiment& e, const std::string& title, const std::string& data,
                         const std::vector<std::string>& png) {
   std::ostringstream gp;
@@ -74,13 +74,14 @@ std::string plot_script(const GpsInsExperiment& e, const std::string& title, con
     const auto ylabel = [&](int c) { return std::string(kErrorNames[F.first + c]) + " (" + F.unit + ")"; };
     const auto curves = [&](int c) {
       std::ostringstream plot;
-      for (std::size_t f = 0; f < e.filters.size(); ++f) {
+      for (std::size_t f = 0; f < e.filters.size(); ++f) {  // solid first, then dashed, dotted: the
+        const std::size_t i = f;                             // later curves let the earlier show through
         const std::size_t err_col = 2 + 24 * f + static_cast<std::size_t>(F.first + c), sig_col = err_col + 12;
         const std::string lc = " lc " + std::to_string(f + 1);
-        plot << (f ? ", " : "") << gnuplot_quoted(data) << " using 1:" << err_col << " with lines lw 1" << lc
-             << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced, '' using 1:" << sig_col
-             << " with lines dt 2" << lc << " title " << gnuplot_quoted(e.filters[f].name + " ±3σ")
-             << " noenhanced, '' using 1:(-$" << sig_col << ") with lines dt 2" << lc << " notitle";
+        plot << (i ? ", " : "") << gnuplot_quoted(data) << " using 1:" << err_col << " with lines lw 1.2 dt " << 1 + f
+             << lc << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced, '' using 1:" << sig_col
+             << " with lines lw 0.7 dt 2" << lc << " title " << gnuplot_quoted(e.filters[f].name + " ±3σ")
+             << " noenhanced, '' using 1:(-$" << sig_col << ") with lines lw 0.7 dt 2" << lc << " notitle";
       }
       return plot.str();
     };

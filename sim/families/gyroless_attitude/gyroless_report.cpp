@@ -113,11 +113,11 @@ std::string plot_script(const GyrolessExperiment& e, const std::vector<Figure>& 
         plot << gnuplot_quoted(data) << " using 1:" << 2 + c << " with lines lw 1.5 title 'truth'";
         return plot.str();
       }
-      for (std::size_t n = 0; n < F.filters.size(); ++n) {
-        const std::size_t f = F.filters[n];
+      for (std::size_t n = 0; n < F.filters.size(); ++n) {  // solid first, then dashed, dotted: the
+        const std::size_t i = n, f = F.filters[n];          // later curves let the earlier show through
         const std::size_t col = 5 + 9 * f + static_cast<std::size_t>(F.block + c);
-        plot << (n ? ", " : "") << gnuplot_quoted(data) << " using 1:" << col << " with lines lw 1 lc " << n + 1
-             << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced";
+        plot << (i ? ", " : "") << gnuplot_quoted(data) << " using 1:" << col << " with lines lw 1.2 dt " << 1 + n % 5
+             << " lc " << n + 1 << " title " << gnuplot_quoted(e.filters[f].name) << " noenhanced";
       }
       return plot.str();
     };

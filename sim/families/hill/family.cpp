@@ -80,8 +80,10 @@ class Hill final : public Family {
     for (const auto& src : {setup.scenario.filters.hinf, setup.scenario.filters.published})
       if (src) out.inputs.push_back(src->gains_path.empty() ? src->synthesize_path : src->gains_path);
     out.plots = setup.scenario.plots;
-    out.draw_plots = [results](const std::string& dir, const std::string& title, AtomicFileSet& outputs) {
-      write_plots(dir, *results->front().trajectory, title, outputs);
+    const auto scenario = std::make_shared<const Scenario>(setup.scenario);
+    out.draw_plots = [results, scenario, seed = r.seed](const std::string& dir, const std::string& title,
+                                                         AtomicFileSet& outputs) {
+      write_plots(dir, *results, *scenario, title, seed, outputs);
     };
     return out;
   }

@@ -1,6 +1,7 @@
 // format_hold_* and write_hold_plots (hold_report.hpp).
 #include "hinf/sim/hold_report.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -83,17 +84,26 @@ std::string format_hold_summary_json(const HoldScenario& s, const std::vector<Ho
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
+// The thrusters' figure plots each axis's applied force as its moving mean over 1 % of the run
+// (a pulse train's duty cycle, signed, in N) beside the command U, one strip per axis.
+constexpr double kThrustMeanFraction = 0.01;
+
 void write_hold_plots(const std::string& dir, const HoldTrajectory& tr, const std::string& title,
                       hinf::AtomicFileSet& outputs) {
   namespace fs = std::filesystem;
   const std::vector<std::string> names = {"position.png", "velocity.png", "thrusters.png"};
   std::vector<std::string> png;
   for (const auto& n : names) png.push_back(outputs.reserve((fs::path(dir) / n).string()));
-  std::ostringstream data;
+  const std::size_t window = std::max<std::size_t>(1, static_cast<std::size_t>(kThrustMeanFraction * tr.t.size()));
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::ostringstream data;  // t, error (3), velocity (3), force (3), its moving mean (3), command (3)
   data.precision(9);
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    sum += tr.force[k];
+    if (k >= window) sum -= tr.force[k - window];
+    const Eigen::Vector3d mean = sum / static_cast<double>(std::min(k + 1, window));
     data << tr.t[k];
-    for (const auto* v : {&tr.error[k], &tr.velocity[k], &tr.force[k]})
+    for (const auto* v : {&tr.error[k], &tr.velocity[k], &tr.force[k], &mean, &tr.command[k]})
       for (int i = 0; i < 3; ++i) data << ' ' << (*v)(i);
     data << '\n';
   }
@@ -101,17 +111,29 @@ void write_hold_plots(const std::string& dir, const HoldTrajectory& tr, const st
   const std::string dat = scratch.add((fs::path(dir) / "plot.dat").string(), data.str());
   std::ostringstream gp;
   gp << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\nset grid\nset key outside right top\n"
-     << "set xlabel 'time (s)'\n";
-  const char* what[] = {"position error ρ − ρ* (m)", "velocity ρ̇ (m/s)", "thrust, mean over each 0.1 s (N)"};
-  for (int f = 0; f < 3; ++f) {
+     << "set xlabel 'time (s)'\nset datafile missing 'nan'\n";
+  const char* what[] = {"position error ρ − ρ* (m)", "velocity ρ̇ (m/s)"};
+  for (int f = 0; f < 2; ++f) {
     gp << "set output " << gnuplot_quoted(png[f]) << "\nset ylabel " << gnuplot_quoted(what[f])
-       << "\nset title " << gnuplot_quoted(title + ": " + what[f]) << " noenhanced\nplot ";
+       << "\nset title " << gnuplot_quoted(title + ": " + what[f] + ", run 0") << " noenhanced\nplot ";
     for (int i = 0; i < 3; ++i)
       gp << (i ? ", " : "") << gnuplot_quoted(dat) << " using 1:" << 2 + 3 * f + i << " with lines lw 1.2 title "
          << gnuplot_quoted(std::string(1, "xyz"[i]));
     gp << "\n";
   }
-  gp << "set output\n";
+  std::ostringstream heading;
+  heading.precision(3);
+  heading << title << ": thrust per axis, run 0: moving mean over " << window * (tr.t.size() > 1 ? tr.t[1] - tr.t[0] : 0)
+          << " s (the pulses' duty cycle) and the command U";
+  gp << "unset title\nunset xlabel\n"
+     << gnuplot_stacked_figure(
+            png[2], heading.str(), 3, [](int p) { return std::string("F_") + "xyz"[p] + " (N)"; },
+            [&](int p) {
+              return gnuplot_quoted(dat) + " using 1:" + std::to_string(11 + p) +
+                     " with lines lw 1.8 lc rgb '#1f77b4' title 'moving mean', '' using 1:" + std::to_string(14 + p) +
+                     " with lines lw 0.8 dt 2 lc rgb '#d62728' title 'command U'";
+            })
+     << "set output\n";
   const std::string script = scratch.add((fs::path(dir) / "plot.gp").string(), gp.str());
   run_plot_script(script, png, names);
 }

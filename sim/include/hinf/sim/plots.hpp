@@ -3,6 +3,7 @@
 // filter (the paper's figures 2–5, 7) and the thrust history (figure 6).
 #pragma once
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,20 @@ void run_plot_script(const std::string& script_path, const std::vector<std::stri
                      const std::vector<std::string>& names);
 
 // Draws DIR/position_error.png, DIR/velocity_error.png, DIR/thrust.png into temporaries of
-// `outputs` (renamed with the run's other outputs by outputs.commit()). Returns the file
-// names. Throws PlotError.
-std::vector<std::string> write_plots(const std::string& dir, const Trajectory& trajectory, const std::string& title,
+// `outputs` (renamed with the run's other outputs by outputs.commit()): per filter the moving
+// RMS of the error norm (plot_trace_settings) — run 0's over its raw trace in a lighter tone,
+// or with several runs their median and 5–95 % band —, the convergence threshold and the
+// steady-state start marked, scenario (`title`), seed and run count in the titles; the thrust
+// of run 0. `results[0]` must hold its trajectory. Returns the file names. Throws PlotError.
+std::vector<std::string> write_plots(const std::string& dir, const std::vector<RunResult>& results,
+                                     const Scenario& scenario, const std::string& title, std::uint64_t seed,
                                      AtomicFileSet& outputs);
+
+// The band of one filter's trace over the runs, per instant: the median and the 5 % and 95 %
+// nearest-rank quantiles of the runs' values that are not NaN (NaN where every run's is).
+struct TraceBand {
+  std::vector<double> p05, median, p95;
+};
+TraceBand trace_band(const std::vector<const std::vector<double>*>& runs);
 
 }  // namespace hinf::sim

@@ -44,10 +44,23 @@ struct FilterOutcome {
   std::string name;
   FilterMetrics metrics;
   FilterHealth health;
+  // The plots' traces (plot_trace_settings): the moving RMS of |e_p| and |e_v| at RunResult::trace_t.
+  std::vector<double> position_rms_trace, velocity_rms_trace;
 };
+
+// Every run keeps its error norms' moving RMS over `window` samples at every `stride`-th sample
+// (at most kPlotTracePoints of them) for the Monte-Carlo band of the plots (docs/experiments.md
+// "Plots"); window: metrics.converge_window_s when set, else 1 % of the duration.
+inline constexpr long kPlotTracePoints = 600;
+struct PlotTraceSettings {
+  long window = 1, stride = 1;  // samples
+  double window_s = 0;
+};
+PlotTraceSettings plot_trace_settings(const Scenario& s);
 
 struct RunResult {
   std::uint64_t seed = 0;
+  std::vector<double> trace_t;           // s: the instants of the filters' plot traces
   std::vector<FilterOutcome> filters;    // in the order of filter_names()
   std::optional<Trajectory> trajectory;  // kept if asked for
 };
