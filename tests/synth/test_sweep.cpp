@@ -183,6 +183,18 @@ TEST(Sweep, AParameterNameThatIsNotOneIsNamedWithTheClosest) {
   const std::string quoted = two_mass_with_k("parameters:\n  k: {nominal: 1, range: ['0.9', 1.2]}\n", "k");
   EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("k", quoted, "c.yaml"); }),
              "'parameters.k.range' is not a plain number");
+  // A number that is a YAML anchor is read elsewhere through its aliases: replacing it in the
+  // text would move those too (another parameter's nominal, the other end of the range), so
+  // it is not a plain number to sweep.
+  const std::string aliased = two_mass_with_k("parameters:\n  k: {nominal: &n 1, range: [0.9, 1.2]}\n"
+                                              "  m: {nominal: *n, range: [0.5, 1.5]}\n", "k");
+  EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("k", aliased, "c.yaml"); }), "'parameters.k.nominal' is not a plain number");
+  const std::string twice = two_mass_with_k("parameters:\n  k: {nominal: 1.2, range: [0.9, &top 1.2]}\n", "k");
+  EXPECT_HAS(error_of([&] { synth::resolve_sweep_parameter("k", twice, "c.yaml"); }), "'parameters.k.range' is not a plain number");
+  std::string anchored_period = two_mass_with_k("", "1");
+  anchored_period.replace(anchored_period.find("sample_time: 0.05"), 17, "sample_time: &T 0.05");
+  EXPECT_HAS(error_of([&] { synth::with_value(anchored_period, "c.yaml", "system.sample_time", 0.1); }),
+             "'system.sample_time' is not a plain number");
   // A value that is not a number is named before any config is read.
   const synth::SweepParameter k = synth::resolve_sweep_parameter("k", named, "c.yaml");
   EXPECT_HAS(error_of([&] { synth::config_at(k, std::nan(""), named, "c.yaml"); }), "k = ");

@@ -27,7 +27,9 @@ std::vector<std::string> split_key_path(const std::string& key_path) {
 }
 
 // The position in `yaml_text` of the plain scalar `node` (written exactly as read: no quotes,
-// no folding); Error InvalidInput naming `key_path` otherwise.
+// no folding, no anchor — an anchored number is read elsewhere through its aliases, and its
+// mark is the anchor's, so it fails the comparison below); Error InvalidInput naming
+// `key_path` otherwise.
 std::size_t plain_scalar_position(const YamlReader& reader, const YAML::Node& node, const std::string& yaml_text,
                                   const std::string& key_path, const std::string& what) {
   const std::size_t pos = node.IsScalar() && node.Mark().pos >= 0 ? static_cast<std::size_t>(node.Mark().pos)
