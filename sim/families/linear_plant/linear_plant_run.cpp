@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
+#include "hinf/certify/h2_norm.hpp"
+#include "hinf/common/error.hpp"
 #include "hinf/runtime/lti_filter.hpp"
 #include "hinf/sim/rng.hpp"
 #include "hinf/sim/simulation_error.hpp"
@@ -20,26 +23,10 @@ namespace {
 // The noise streams of a run, one per channel (docs/experiments.md "Reproducibility").
 enum Stream : std::uint64_t { kProcessStream = 0, kMeasurementStream = 1, kInitialStateStream = 2, kUncertaintyStream = 3 };
 
-// The doubling iteration for Σ = Ā Σ Āᵀ + Q stops when Ā^(2^i) is this small (in norm) …
-constexpr double kDoublingConverged = 1e-18;
-// … or after this many doublings (Ā^(2^64): ρ(Ā) within 2⁻⁶⁰ of 1 is not stationary in practice).
-constexpr int kMaxDoublings = 64;
-
 VectorXd normal_vector(Rng& rng, Eigen::Index size, double std) {
   VectorXd v(size);
   for (Eigen::Index i = 0; i < size; ++i) v(i) = std * rng.normal();
   return v;
-}
-
-// Σ = Σ_i Āⁱ Q Āⁱᵀ by doubling (S ← S + M S Mᵀ, M ← M²); nullopt if M does not vanish.
-std::optional<MatrixXd> stationary_covariance(MatrixXd M, MatrixXd S) {
-  for (int i = 0; i < kMaxDoublings; ++i) {
-    S += M * S * M.transpose();
-    M = (M * M).eval();
-    if (!M.allFinite() || !S.allFinite()) return std::nullopt;
-    if (M.norm() < kDoublingConverged) return S;
-  }
-  return std::nullopt;
 }
 
 struct FilterRun {
@@ -103,22 +90,22 @@ double predicted_error_rms(const LinearPlantScenario& s, const LtiGains& g, cons
   const Plant& P = s.plant;
   const Eigen::Index n = P.n(), nf = g.A_F.rows(), p = P.p(), q = P.q();
   const bool filtered = g.D_F.size() > 0;
-  // (228): ξ = [x; x_F], ξ(k+1) = Ā ξ + B̄ [w; v], e = C̄ ξ − D_F D v
-  MatrixXd A_bar = MatrixXd::Zero(n + nf, n + nf), B_bar = MatrixXd::Zero(n + nf, p + q);
-  A_bar.topLeftCorner(n, n) = s.truth_A(delta);
-  A_bar.bottomLeftCorner(nf, n) = g.B_F * P.C;
-  A_bar.bottomRightCorner(nf, nf) = g.A_F;
-  B_bar.topLeftCorner(n, p) = P.B;
-  B_bar.bottomRightCorner(nf, q) = g.B_F * P.D;
-  VectorXd noise(p + q);
-  noise << VectorXd::Constant(p, s.process_std * s.process_std), VectorXd::Constant(q, s.measurement_std * s.measurement_std);
-  const auto Sigma = stationary_covariance(A_bar, B_bar * noise.asDiagonal() * B_bar.transpose());
-  if (!Sigma) return std::numeric_limits<double>::quiet_NaN();
-  MatrixXd C_bar(P.l(), n + nf);
-  C_bar << (filtered ? MatrixXd(P.L - g.D_F * P.C) : P.L), -g.C_F;
-  double mean_square = (C_bar * *Sigma * C_bar.transpose()).trace();  // (229)
-  if (filtered) mean_square += s.measurement_std * s.measurement_std * (g.D_F * P.D).squaredNorm();
-  return std::sqrt(mean_square);
+  // (228) with the noise scaled to unit covariance: ξ = [x; x_F], ξ(k+1) = Ā ξ + B̄ n,
+  // e = C̄ ξ + D̄ n, n = [w/σ_w; v/σ_v]; (229) is its H2 norm.
+  StateSpace e{MatrixXd::Zero(n + nf, n + nf), MatrixXd::Zero(n + nf, p + q), MatrixXd(P.l(), n + nf),
+               MatrixXd::Zero(P.l(), p + q)};
+  e.A.topLeftCorner(n, n) = s.truth_A(delta);
+  e.A.bottomLeftCorner(nf, n) = g.B_F * P.C;
+  e.A.bottomRightCorner(nf, nf) = g.A_F;
+  e.B.topLeftCorner(n, p) = s.process_std * P.B;
+  e.B.bottomRightCorner(nf, q) = s.measurement_std * g.B_F * P.D;
+  e.C << (filtered ? MatrixXd(P.L - g.D_F * P.C) : P.L), -g.C_F;
+  if (filtered) e.D.rightCols(q) = -s.measurement_std * g.D_F * P.D;
+  try {
+    return certify::discrete_h2_norm(e);
+  } catch (const Error&) {  // not Schur stable, or the Gramian did not converge: no stationary value
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 std::vector<LinearPlantStatistics> run_linear_plant(const LinearPlantScenario& s,

@@ -85,8 +85,8 @@ std::vector<LinearPlantStatistics> run_linear_plant(const LinearPlantScenario& s
                                                     const LinearPlantRunOptions& o, std::uint64_t seed);
 
 // The steady-state RMS of z − ẑ for these gains on the scenario's truth at `delta` (one per
-// block of F) and its noise, docs/maths.md (229), from the stationary covariance of (228)
-// (doubling); NaN if (228) is not Schur stable.
+// scalar) and its noise, docs/maths.md (229): the H2 norm of (228) with the noise scaled to unit
+// covariance (certify::discrete_h2_norm); NaN if (228) is not Schur stable.
 double predicted_error_rms(const LinearPlantScenario& s, const LtiGains& gains, const Eigen::VectorXd& delta);
 
 }  // namespace hinf::sim
