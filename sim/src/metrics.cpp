@@ -94,18 +94,11 @@ MetricStats compute_stats(const std::vector<std::optional<double>>& values) {
   return s;
 }
 
-std::vector<double> moving_rms_samples(const std::vector<double>& x, long window, long stride) {
+std::vector<double> moving_rms_samples(const std::vector<double>& t, const std::vector<double>& x, double window,
+                                       long stride) {
+  const std::vector<double> r = trailing_rms(t, x, window);
   std::vector<double> out;
-  double sum = 0;  // of the squares in the window; NaN once a NaN entered it (and after)
-  bool nan = false;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    nan = nan || std::isnan(x[k]);
-    sum += x[k] * x[k];
-    if (k >= static_cast<std::size_t>(window)) sum -= x[k - static_cast<std::size_t>(window)] * x[k - static_cast<std::size_t>(window)];
-    if (k % static_cast<std::size_t>(stride) != 0) continue;
-    const double n = static_cast<double>(std::min<std::size_t>(k + 1, static_cast<std::size_t>(window)));
-    out.push_back(nan ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(std::max(sum, 0.0) / n));
-  }
+  for (std::size_t k = 0; k < r.size(); k += static_cast<std::size_t>(stride)) out.push_back(r[k]);
   return out;
 }
 

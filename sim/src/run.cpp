@@ -83,7 +83,6 @@ Vector3 thrust(const Scenario& s, const Vector6& x, const Vector6& hinf_estimate
 PlotTraceSettings plot_trace_settings(const Scenario& s) {
   PlotTraceSettings p;
   p.window_s = s.converge_window_s > 0 ? s.converge_window_s : s.duration / 100;
-  p.window = std::max(1L, std::lround(p.window_s / s.sample_time));
   p.stride = std::max(1L, (s.steps() + kPlotTracePoints - 1) / kPlotTracePoints);
   return p;
 }
@@ -154,8 +153,8 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
     traj.filters[f].health = estimators[f]->health();
     result.filters.push_back(
         {names[f], compute_metrics(traj.t, rec.pos_err[f], rec.vel_err[f], traj.filters[f].diverged_at, ms),
-         estimators[f]->health(), moving_rms_samples(rec.pos_err[f], plot.window, plot.stride),
-         moving_rms_samples(rec.vel_err[f], plot.window, plot.stride)});
+         estimators[f]->health(), moving_rms_samples(traj.t, rec.pos_err[f], plot.window_s, plot.stride),
+         moving_rms_samples(traj.t, rec.vel_err[f], plot.window_s, plot.stride)});
   }
   if (keep_trajectory) result.trajectory = std::move(traj);
   return result;

@@ -103,23 +103,28 @@ TEST(Metrics, StatsOfIdenticalValuesAreExact) {
   EXPECT_EQ(s.count, 3);
 }
 
-// The plots' moving RMS (docs/experiments.md "Plots"): a window of w samples (fewer at the
-// start), taken every stride-th sample, NaN from the first NaN on; its closed forms on a step
-// and a constant.
+// The plots' moving RMS (docs/experiments.md "Plots"): a window of w seconds (w samples at unit
+// spacing; fewer at the start), taken every stride-th sample, NaN from the first NaN on; its
+// closed forms on a step and a constant.
 TEST(Metrics, MovingRmsOfAStepAndOfAConstant) {
+  const auto times = [](std::size_t n) {
+    std::vector<double> t(n);
+    for (std::size_t k = 0; k < n; ++k) t[k] = static_cast<double>(k);
+    return t;
+  };
   const std::vector<double> step{0, 0, 3, 3, 3, 3};
-  const std::vector<double> r = hinf::sim::moving_rms_samples(step, 2, 1);
+  const std::vector<double> r = hinf::sim::moving_rms_samples(times(6), step, 2, 1);
   ASSERT_EQ(r.size(), 6u);
   EXPECT_EQ(r[0], 0.0);
   EXPECT_EQ(r[1], 0.0);
   EXPECT_NEAR(r[2], std::sqrt(9.0 / 2), 1e-15);  // {0, 3}
   EXPECT_NEAR(r[3], 3.0, 1e-15);                  // {3, 3}
-  const std::vector<double> every2 = hinf::sim::moving_rms_samples(step, 2, 2);
+  const std::vector<double> every2 = hinf::sim::moving_rms_samples(times(6), step, 2, 2);
   ASSERT_EQ(every2.size(), 3u);  // samples 0, 2, 4
   EXPECT_NEAR(every2[2], 3.0, 1e-15);
-  const std::vector<double> c = hinf::sim::moving_rms_samples(std::vector<double>(100, -2.0), 10, 7);
+  const std::vector<double> c = hinf::sim::moving_rms_samples(times(100), std::vector<double>(100, -2.0), 10, 7);
   for (double v : c) EXPECT_NEAR(v, 2.0, 1e-14);
-  const std::vector<double> diverged = hinf::sim::moving_rms_samples({1, 1, std::nan(""), 1}, 1, 1);
+  const std::vector<double> diverged = hinf::sim::moving_rms_samples(times(4), {1, 1, std::nan(""), 1}, 1, 1);
   EXPECT_EQ(diverged[1], 1.0);
   EXPECT_TRUE(std::isnan(diverged[2]) && std::isnan(diverged[3]));
 }

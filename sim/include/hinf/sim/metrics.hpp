@@ -46,9 +46,10 @@ MetricStats compute_stats(const std::vector<std::optional<double>>& values);
 // The nearest-rank q-quantile (0 < q ≤ 1) of a non-empty series: its ⌈q n⌉-th smallest value.
 double nearest_rank_quantile(std::vector<double> values, double q);
 
-// For the plots (docs/experiments.md "Plots"): the trailing moving RMS of x over `window`
-// samples (fewer at the start), taken at every `stride`-th sample (0, stride, 2 stride, …);
-// NaN from the first NaN of x on (a diverged filter).
-std::vector<double> moving_rms_samples(const std::vector<double>& x, long window, long stride);
+// For the plots (docs/experiments.md "Plots"): the trailing RMS of x(t) over the last `window`
+// seconds (the one the convergence time uses; fewer samples at the start), taken at every
+// `stride`-th sample (0, stride, 2 stride, …); NaN from the first NaN of x on (a diverged filter).
+std::vector<double> moving_rms_samples(const std::vector<double>& t, const std::vector<double>& x, double window,
+                                       long stride);
 
 }  // namespace hinf::sim

@@ -53,8 +53,8 @@ struct FilterOutcome {
 // "Plots"); window: metrics.converge_window_s when set, else 1 % of the duration.
 inline constexpr long kPlotTracePoints = 600;
 struct PlotTraceSettings {
-  long window = 1, stride = 1;  // samples
   double window_s = 0;
+  long stride = 1;  // samples
 };
 PlotTraceSettings plot_trace_settings(const Scenario& s);
 
