@@ -56,7 +56,7 @@ UncertaintyFactors uncertainty_from_parameters(const std::vector<Eigen::MatrixXd
     Es.push_back(parameters[i].radius() * Xi);  // (138): E rows rᵢ X
     j += Hi.cols();
   }
-  UncertaintyFactors f{Eigen::MatrixXd::Zero(n, j), Eigen::MatrixXd::Zero(j, cols), {}};
+  UncertaintyFactors f{Eigen::MatrixXd::Zero(n, j), Eigen::MatrixXd::Zero(j, cols), {}, {}};
   Eigen::Index at = 0;
   for (std::size_t i = 0; i < Hs.size(); ++i) {
     f.H.middleCols(at, Hs[i].cols()) = Hs[i];

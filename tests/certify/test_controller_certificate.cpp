@@ -130,6 +130,21 @@ TEST(Pbh, DiscreteUnseenModeAndItsDirection) {
   EXPECT_FALSE(hinf::certify::unseen_unstable_mode(A, (MatrixXd(1, 2) << 1, 0).finished(), true).has_value());
 }
 
+// A defective unstable eigenvalue (issue 35: a generated 3-state plant ended in exit 4, a
+// phase I failure, instead of exit 3): A has λ = 1/2 twice in one Jordan block, computed as
+// a pair 1/2 ± ~1e-8; its eigenvector e₃ is unseen by y = x₁ (x₃ enters neither x₁ nor x₂).
+// PBH at either computed member misses it; at the cluster's mean it is found. The same
+// plant measured through x₃ sees every mode.
+TEST(Pbh, DefectiveUnstableEigenvalueUnseenIsFound) {
+  MatrixXd A(3, 3);
+  A << -1.0, -1.5, 0.0, 0.5, 1.0, 0.0, -0.5, -1.0, 0.5;
+  const auto m = hinf::certify::unseen_unstable_mode(A, (MatrixXd(1, 3) << 1, 0, 0).finished(), false);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NEAR(std::abs(m->lambda - 0.5), 0, 1e-12);
+  EXPECT_NEAR(std::abs(m->direction(2)), 1, 1e-8);
+  EXPECT_FALSE(hinf::certify::unseen_unstable_mode(A, (MatrixXd(1, 3) << 0, 0, 1).finished(), false).has_value());
+}
+
 // Witness-based (issue 34): random plants with unstable modes and a state feedback K built
 // with them so that A + B K is stable — (A, B) is stabilisable by construction — in time
 // units stretched by 1 … 1e8 (A → sA, K → sK), state coordinates scaled by 1e-2 … 1e2 and the

@@ -105,6 +105,10 @@ std::string format_controller_yaml(const ControllerSynthesisResult& r, const hin
   kv(out, "eigen_version", eigen_version());
   kv(out, "newton_iterations", r.newton_iterations);
   if (r.stopped_short) kv(out, "stopped_short", *r.stopped_short);
+  if (r.narrower_ball) {  // recovered in a narrower ball than the optimum's (docs/maths.md §4.3)
+    kv(out, "feasibility_radius", *r.narrower_ball);
+    kv(out, "wider_ball_gamma_optimal", *r.gamma_optimal_wider_ball);
+  }
   kv(out, "lmi_order", r.lmi_order);
   kv(out, "variables", r.variables);
   out << YAML::EndMap;

@@ -29,6 +29,12 @@ constexpr double kAutomaticBackoffs[] = {1e-7, 1e-5, 1e-3, 1e-2, 5e-2};
 // controller is recovered from them (docs/maths.md §4.3; measured on the plant
 // 1/(s(s − p)): p = 1e5 gives a certified controller from the 1e12 ball, none from 1e16).
 constexpr double kMaxControllerRadius = 1e12;
+// The balls the controller LMI is solved in again when no controller is recovered from the
+// ball of γ*'s point (recover_in_narrower_balls): each this factor narrower than the last,
+// down to the narrowest (measured on COMPleib's singular plants: radius 1e4 recovers some,
+// 1e2 more, at a γ* a little higher; those whose optimum needs a wider ball, 1e6).
+constexpr double kNarrowerBallFactor = 1e2;
+constexpr double kNarrowestControllerBall = 1e2;
 // The robust design's D-scaling search (docs/maths.md (160a)): decades of d from 1e-6 to
 // 1e3, then golden sections within a decade of the best.
 constexpr double kLogDLow = -6, kLogDHigh = 3;
@@ -269,6 +275,39 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
   return r.controller.A_K.size() > 0;
 }
 
+// When no controller is recovered from the ball γ*'s point was found in (I − R S singular to
+// working precision at the optimum and at every back-off: singular problems, whose optimum
+// is approached only as R and S grow without bound, so that the optimum and the point of
+// largest margin both lie on the ball): the LMI is solved again in balls kNarrowerBallFactor
+// narrower at a time, down to kNarrowestControllerBall, and the controller recovered there — a γ* a little higher (the
+// narrower ball's), a controller certified (docs/maths.md §4.3); until a ball holds no
+// strictly feasible point. The wider ball's γ* is reported beside it.
+bool recover_in_narrower_balls(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
+                               ControllerSynthesisResult& r, std::string& why) {
+  const double gamma_wide = C.lmi.value(C.g, sol.x)(0, 0) * x.S.scaling.gamma_factor();
+  for (double radius = sol.feasibility_radius / kNarrowerBallFactor; radius >= kNarrowestControllerBall;
+       radius /= kNarrowerBallFactor) {
+    Settings narrow = x.settings;
+    narrow.solver.feasibility_radius = radius;
+    const SynthesisContext in_ball{x.P, x.S, x.design, narrow, x.observer};
+    const sdp::Solution sn = sdp::minimize_linear(C.lmi, C.lmi.cost_of(C.g), narrow.solver, Eigen::VectorXd(),
+                                                  staged(x.observer, SolveStage::Controller));
+    r.newton_iterations += sn.newton_total;
+    r.time_s += sn.elapsed_s;
+    if (sn.status == sdp::Status::Infeasible) break;  // a narrower ball holds no feasible point either
+    if (!sdp::has_point(sn.status)) continue;
+    std::string why_here;
+    if (recover_certified(in_ball, C, sn, nullptr, r, why_here)) {
+      r.narrower_ball = radius;
+      r.gamma_optimal_wider_ball = gamma_wide;
+      if (!r.gamma_optimal) r.gamma_optimal = C.lmi.value(C.g, sn.x)(0, 0) * x.S.scaling.gamma_factor();
+      return true;
+    }
+  }
+  why += " (nor in narrower balls, docs/maths.md §4.3)";
+  return false;
+}
+
 // When the nominal controller fails the small-gain test (docs/maths.md (160a)): the least
 // ‖T_qp‖∞ any controller achieves (Error Infeasible if a verified dual bound puts it ≥ 1),
 // then the controller of (149) with ‖T_qp‖∞ < 1 imposed in the same variables.
@@ -392,7 +431,12 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
     r.time_s += sf.elapsed_s;
   }
   std::string why;
-  if (!recover_certified(x, C, sol, nullptr, r, why)) throw Error(ErrorCode::NumericalFailure, why);
+  bool recovered = recover_certified(x, C, sol, nullptr, r, why);
+  if (!r.certificate.passed && !(r.certificate.stable && !r.certificate.robustly_stable)) {
+    ControllerSynthesisResult narrow = r;  // r keeps the wider ball's failure to report
+    if (recover_in_narrower_balls(x, C, sol, narrow, why)) r = std::move(narrow), recovered = true;
+  }
+  if (!recovered) throw Error(ErrorCode::NumericalFailure, why);
   const bool discrete = P.time == hinf::TimeDomain::Discrete;
   if (design.robust && r.certificate.stable && !r.certificate.robustly_stable) {
     if (discrete)
