@@ -184,6 +184,13 @@ enum class Recovered {
   Failed         // no controller, or one the certificate rejects: a numerical failure
 };
 
+// What a recovered controller's certificate makes of the attempt.
+Recovered outcome_of(const ControllerCertificate& c) {
+  if (c.passed) return Recovered::Certified;
+  if (c.stable && !c.robustly_stable) return Recovered::RobustFailed;
+  return Recovered::Failed;
+}
+
 // The controller of LMI C (minimising γ, solution sol) at back-off b, recovered and
 // certified into r: at the γ-optimal point (b = 0) or at the back-off point of (149a)
 // at (1 + b) γ*; `why` says why it failed.
@@ -235,10 +242,9 @@ Recovered recover_at(const SynthesisContext& x, const ControllerLmi& C, const sd
   r.certificate.lmi_max_eigenvalue =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(lmi_at_point, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
   r.certificate.passed = r.certificate.passed && r.certificate.lmi_max_eigenvalue < 0;
-  if (r.certificate.passed) return Recovered::Certified;
-  if (r.certificate.stable && !r.certificate.robustly_stable) return Recovered::RobustFailed;
-  why = "the certificate failed";
-  return Recovered::Failed;
+  const Recovered got = outcome_of(r.certificate);
+  if (got == Recovered::Failed) why = "the certificate failed";
+  return got;
 }
 
 // The controller of LMI C recovered and certified into r: at the γ-optimal point, or — asked
@@ -279,9 +285,9 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
 // working precision at the optimum and at every back-off: singular problems, whose optimum
 // is approached only as R and S grow without bound, so that the optimum and the point of
 // largest margin both lie on the ball): the LMI is solved again in balls kNarrowerBallFactor
-// narrower at a time, down to kNarrowestControllerBall, and the controller recovered there — a γ* a little higher (the
-// narrower ball's), a controller certified (docs/maths.md §4.3); until a ball holds no
-// strictly feasible point. The wider ball's γ* is reported beside it.
+// narrower at a time, down to kNarrowestControllerBall, until one holds no strictly feasible
+// point, and the controller recovered there — a γ* a little higher (the narrower ball's), a
+// controller certified (docs/maths.md §4.3). The wider ball's γ* is reported beside it.
 bool recover_in_narrower_balls(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
                                ControllerSynthesisResult& r, std::string& why) {
   const double gamma_wide = C.lmi.value(C.g, sol.x)(0, 0) * x.S.scaling.gamma_factor();
@@ -432,7 +438,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
   }
   std::string why;
   bool recovered = recover_certified(x, C, sol, nullptr, r, why);
-  if (!r.certificate.passed && !(r.certificate.stable && !r.certificate.robustly_stable)) {
+  if (outcome_of(r.certificate) == Recovered::Failed) {
     ControllerSynthesisResult narrow = r;  // r keeps the wider ball's failure to report
     if (recover_in_narrower_balls(x, C, sol, narrow, why)) r = std::move(narrow), recovered = true;
   }
