@@ -30,7 +30,10 @@ constexpr double kCentringProgressFactor = 0.5;
 constexpr double kQuadraticRegionLambda2 = 0.25;
 constexpr double kNewtonBoundSlack = 4.0;
 // Giving up: no progress for give_up_iterations while λ² < kNearCentreLambda2, or
-// while the Hessian has turned numerically indefinite kIndefiniteLimit times.
+// while the Hessian has turned numerically indefinite kIndefiniteLimit times since the last
+// progress (far from the centre, in Newton's damped stage, λ² may stay large for many steps
+// while the barrier falls: COMPleib's NN11 starts with four indefinite Hessians, then λ² ≈ 55
+// for 13 steps while s falls from 0.38 to below 0).
 constexpr double kNearCentreLambda2 = 1.0;
 constexpr int kIndefiniteLimit = 2;
 // Ipopt's own convergence tests are set below anything reachable: the Newton-decrement
@@ -158,6 +161,7 @@ class CenteringTnlp : public Ipopt::TNLP {
       if (l2 < kCentringProgressFactor * best_lambda2_) {
         best_lambda2_ = l2;
         best_iter_ = iter;
+        indefinite_ = 0;
       } else if (iter - best_iter_ >= opt_.stall_iterations && smallest_lambda2_ <= opt_.lambda2_accept) {
         centred_ = true;
         stalled_ = true;
@@ -194,7 +198,7 @@ class CenteringTnlp : public Ipopt::TNLP {
   bool inexact_ = false;  // stopped by stop_on_inexact_newton
   double prev_lambda2_ = std::numeric_limits<double>::infinity();
   int best_iter_ = 0;
-  int indefinite_ = 0;  // iterations where λ² could not be computed
+  int indefinite_ = 0;  // iterations where λ² could not be computed, since the last progress
   bool time_limited_ = false;  // stopped by the wall clock (max_seconds)
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };

@@ -55,6 +55,12 @@ constexpr double kShortBudgetWithin = 10;
 // (its Hessian's condition grows like t²).
 constexpr double kGoalSafety = 1.5;
 constexpr double kMinGrowth = 2.0;
+// The first centring of a phase starts far from the centre (at x0, or at phase I's last
+// point near the boundary): Newton's damped stage, which lowers the barrier by at least a
+// constant ω(λ) = λ − ln(1 + λ) per step (Nesterov 2004, §4.1), may need more than max_newton_per_centering
+// steps there. It gets this many times that budget (COMPleib's HE4: phase I's first
+// centring needs 60-120 steps; later centrings start close to the centre and need 5-20).
+constexpr int kFirstCentringBudgetFactor = 4;
 // Halvings of the predictor step tried to keep it inside the domain.
 constexpr int kPredictorHalvings = 40;
 // Initial t: never below this fraction of ν/|cᵀx₀|.
@@ -228,8 +234,8 @@ CenteringOptions PathFollower::centering_options(const LogDetBarrier& b, Phase p
       observer_(p);
     };
   }
-  co.max_iterations = std::min(opt_.max_newton_per_centering,
-                               std::max(1, opt_.max_iterations - sol_.newton_total));
+  const int budget = (centring == 0 ? kFirstCentringBudgetFactor : 1) * opt_.max_newton_per_centering;
+  co.max_iterations = std::min(budget, std::max(1, opt_.max_iterations - sol_.newton_total));
   if (s_.last_stalled && phase == Phase::Minimise &&
       last_relative_gap(b) <= kShortBudgetWithin * opt_.relative_gap_tol)
     co.max_iterations = std::min(co.max_iterations, co.give_up_iterations);

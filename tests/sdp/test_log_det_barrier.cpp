@@ -15,6 +15,8 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ipopt_centering.hpp"
 #include "log_det_barrier.hpp"
@@ -446,4 +448,34 @@ TEST(PathFollowing, ObserverHearsTheHessianAssembly) {
   EXPECT_GT(centrings, 0);
   EXPECT_TRUE(monotone);
   EXPECT_EQ(sol.objective, quiet.objective);  // observing changes nothing
+}
+
+// The first centring of a phase starts far from its centre (here phase I from a start
+// 10³ times larger than the problem's scale) and may need more Newton steps than a later
+// one: it gets kFirstCentringBudgetFactor (4) times max_newton_per_centering
+// (path_following.cpp; docs/maths.md §5.7). With a budget that every later centring fits
+// and the first does not, the solve still succeeds, its first centring longer than the
+// budget, no other one.
+TEST(PathFollowing, TheFirstCentringOfAPhaseGetsALargerBudget) {
+  std::mt19937 g(37);
+  const Plant P = random_plant_with_dimensions(g, 3, 2, 1, 2, 2, 1, 2);
+  const auto T = hinf::synth::build_theorem1(P);
+  const VectorXd c = T.lmi.cost_of(T.g);
+  const VectorXd x0 = 1e3 * random_vector(g, T.lmi.num_params());
+  std::vector<std::pair<int, int>> newton;  // (phase, Newton steps) of every centring
+  const auto record = [&](const hinf::sdp::Progress& p) {
+    if (!p.assembling && !p.newton_step) newton.emplace_back(p.phase, p.newton);
+  };
+  hinf::sdp::Options short_budget;
+  short_budget.max_newton_per_centering = 20;
+  const auto sol = hinf::sdp::minimize_linear(T.lmi, c, short_budget, x0, record);
+  ASSERT_EQ(sol.status, hinf::sdp::Status::Solved) << sol.detail;
+  ASSERT_GE(newton.size(), 3u);
+  EXPECT_GT(newton[0].second, short_budget.max_newton_per_centering);  // phase I's first: 42 steps
+  EXPECT_LE(newton[0].second, 4 * short_budget.max_newton_per_centering);
+  for (size_t k = 1; k < newton.size(); ++k)
+    EXPECT_LE(newton[k].second, short_budget.max_newton_per_centering) << "centring " << k;
+  // the same path as with the default budget, which the first centring fits
+  const auto wide = hinf::sdp::minimize_linear(T.lmi, c, hinf::sdp::Options{}, x0);
+  EXPECT_EQ(sol.objective, wide.objective);
 }

@@ -22,7 +22,7 @@ struct Options {
   double relative_gap_tol = 1e-7;        // stop when the certified gap ≤ this·|cᵀx|
   double barrier_growth = 50.0;          // μ: t grows by at most this factor per centring
   double feasibility_radius = 1e8;       // ρ: the ball ‖x‖ < ρ that bounds the barrier
-  int max_newton_per_centering = 60;     // Newton iterations allowed in one centring
+  int max_newton_per_centering = 60;     // Newton iterations allowed in one centring (the first of a phase: 4x)
   int max_iterations = 600;              // Newton iterations allowed in one solve (I + II)
   double time_limit_s = 600.0;           // wall-clock limit of one solve
   // Polled with the time limit (before every Newton iteration and during every Hessian
