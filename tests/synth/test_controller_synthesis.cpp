@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <random>
 
 #include "hinf/certify/hinf_norm.hpp"
@@ -308,11 +309,15 @@ TEST(ControllerSynthesis, AFastUnstablePoleBehindAnIntegratorIsSolvedInAWiderBal
   }
 }
 
-// γ* = 0 answered exactly (issue "No silently wrong answer", docs/maths.md (152b)): when z
-// sees neither the state nor the control (C1 = 0, D12 = 0), or w reaches neither the state
-// nor the measurement (B1 = 0, D21 = 0), every stabilising controller gives T_zw = D11.
-// With D11 = 0 the written γ is 0 exactly; with D11 ≠ 0 it is σ_max(D11). The closed loop's
-// stability and zero output matrix are recomputed here from the controller alone.
+// tests/data/controllers/NAME, parsed, and the controller synthesised for it.
+std::pair<hinf::synth::ControllerConfig, hinf::synth::ControllerSynthesisResult> synthesise_data_config(
+    const std::string& name) {
+  auto cfg = hinf::synth::parse_controller_config(
+      hinf::synth::read_config_bytes(std::string(HINF_SOURCE_DIR) + "/tests/data/controllers/" + name), name);
+  auto r = hinf::synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+  return {std::move(cfg), std::move(r)};
+}
+
 // A singular problem (tests/data/controllers/singular-noise-free.yaml: y = x1 noise-free,
 // D21 = 0, and u2 free, D12 = [0 1; 0 0]): the LMI's optimum is approached only as R and S
 // grow, and in the optimum's ball (1e12) I − R S is singular to working precision at the
@@ -320,10 +325,7 @@ TEST(ControllerSynthesis, AFastUnstablePoleBehindAnIntegratorIsSolvedInAWiderBal
 // solved again in a narrower ball and the controller recovered there (docs/maths.md §4.3):
 // certified, γ within 1e-4 of the wider ball's optimum (measured: 6.6e-5 above it).
 TEST(ControllerSynthesis, ASingularProblemIsRecoveredInANarrowerBall) {
-  const auto cfg = hinf::synth::parse_controller_config(
-      hinf::synth::read_config_bytes(std::string(HINF_SOURCE_DIR) + "/tests/data/controllers/singular-noise-free.yaml"),
-      "singular-noise-free.yaml");
-  const auto r = hinf::synth::synthesize_controller(cfg.plant, cfg.settings, cfg.design);
+  const auto [cfg, r] = synthesise_data_config("singular-noise-free.yaml");
   ASSERT_TRUE(r.narrower_ball.has_value());
   ASSERT_TRUE(r.gamma_optimal_wider_ball.has_value());
   EXPECT_LT(*r.narrower_ball, 1e8);
@@ -331,6 +333,26 @@ TEST(ControllerSynthesis, ASingularProblemIsRecoveredInANarrowerBall) {
   expect_certified(cfg.plant, r);
 }
 
+// A singular problem whose optimum's ball certifies a controller only at a large back-off
+// (tests/data/controllers/singular-large-backoff.yaml: closed loop 3.1 % above that ball's
+// optimum): a narrower ball's controller, recovered within 1e-6 of its own optimum, has the
+// smaller certified norm and is the one written (docs/maths.md §4.3; measured 0.31 % above
+// the wider ball's optimum). Before, the wider ball's controller was written.
+TEST(ControllerSynthesis, ALargeBackOffGivesWayToANarrowerBall) {
+  const auto [cfg, r] = synthesise_data_config("singular-large-backoff.yaml");
+  ASSERT_TRUE(r.narrower_ball.has_value());
+  ASSERT_TRUE(r.wider_ball_certified_norm.has_value());
+  ASSERT_TRUE(r.gamma_optimal_wider_ball.has_value());
+  EXPECT_LT(r.gamma, *r.wider_ball_certified_norm);
+  EXPECT_LT(r.gamma, *r.gamma_optimal_wider_ball * (1 + 1e-2));
+  expect_certified(cfg.plant, r);
+}
+
+// γ* = 0 answered exactly (issue "No silently wrong answer", docs/maths.md (152b)): when z
+// sees neither the state nor the control (C1 = 0, D12 = 0), or w reaches neither the state
+// nor the measurement (B1 = 0, D21 = 0), every stabilising controller gives T_zw = D11.
+// With D11 = 0 the written γ is 0 exactly; with D11 ≠ 0 it is σ_max(D11). The closed loop's
+// stability and zero output matrix are recomputed here from the controller alone.
 TEST(ControllerSynthesis, PerformanceChannelsOutOfReachAreAnsweredExactly) {
   for (const bool z_blind : {true, false}) {
     GeneralisedPlant P = force_double_integrator();

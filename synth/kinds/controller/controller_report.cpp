@@ -41,15 +41,19 @@ std::string solve(const ControllerSynthesisResult& r, const ControllerConfig& cf
   if (r.stopped_short)
     out += "the solver stopped short of its gap tolerance (" + *r.stopped_short +
            "); the controller is that point's, certified\n";
-  if (r.gamma_optimal)
+  if (r.gamma_optimal && r.backoff > 0)  // (a narrower ball's optimum, without a back-off, is said below)
     out += std::string("gamma back-off") +
            (cfg.settings.gamma_backoff > 0 ? "" : " (automatic: I - R S is singular at the optimum)") +
            ": the LMI's optimum is " + num(*r.gamma_optimal) + "; the controller is recovered at (1 + " + num(r.backoff) +
            ") times it, at the point of largest LMI margin (docs/maths.md (149a))\n";
   if (r.narrower_ball)
-    out += "no controller was certified from the ball of the LMI's optimum " + num(*r.gamma_optimal_wider_ball) +
-           " (at the optimum or any back-off); the LMI was solved again in the ball ||x|| < " + num(*r.narrower_ball) +
-           ", whose optimum is " + num(*r.gamma_optimal) + ", and the controller recovered there (docs/maths.md §4.3)\n";
+    out += (r.wider_ball_certified_norm
+                ? "the ball of the LMI's optimum " + num(*r.gamma_optimal_wider_ball) +
+                      " certified a controller only at a large back-off (closed loop " + num(*r.wider_ball_certified_norm) + ")"
+                : "no controller was certified from the ball of the LMI's optimum " + num(*r.gamma_optimal_wider_ball) +
+                      " (at the optimum or any back-off)") +
+           "; the LMI was solved again in the ball ||x|| < " + num(*r.narrower_ball) + ", whose optimum is " +
+           num(*r.gamma_optimal) + ", and the controller recovered there (docs/maths.md §4.3)\n";
   if (r.gamma_without_disk && !r.robust_synthesis)
     out += "pole disk: without it the LMI's optimum is " + num(*r.gamma_without_disk) + " (+" +
            num(100 * (r.gamma / *r.gamma_without_disk - 1)) + " % for the disk)\n";

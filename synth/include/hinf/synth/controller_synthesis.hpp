@@ -44,10 +44,11 @@ struct ControllerSynthesisResult {
   // With a pole disk: the LMI's optimum without it (the solver's value, for comparison; no
   // controller is recovered there).
   std::optional<double> gamma_without_disk;
-  // When no controller could be recovered in the ball of γ*'s point and one was in a narrower
-  // ball (docs/maths.md §4.3): that ball's radius, and the wider ball's optimum γ* (the
-  // solver's value; gamma_optimal is then the narrower ball's).
-  std::optional<double> narrower_ball, gamma_optimal_wider_ball;
+  // When no controller could be recovered in the ball of γ*'s point, or one only at a large
+  // back-off, and a narrower ball's is certified with a smaller norm (docs/maths.md §4.3):
+  // that ball's radius, the wider ball's optimum γ* (the solver's value; gamma_optimal is then
+  // the narrower ball's), and the wider ball's controller's certified norm if it had one.
+  std::optional<double> narrower_ball, gamma_optimal_wider_ball, wider_ball_certified_norm;
   // With a robust channel that the H∞-optimal controller fails (‖T_qp‖∞ ≥ 1, its value here):
   // the least ‖T_qp‖∞ any controller achieves (the LMI's optimum), and the controller written
   // is then the robust design of docs/maths.md (160a).
