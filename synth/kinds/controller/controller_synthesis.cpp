@@ -191,6 +191,11 @@ enum class Recovered {
   Failed         // no controller, or one the certificate rejects: a numerical failure
 };
 
+// The γ of LMI C's point x (its solver's value) in the user's units (docs/maths.md (154)).
+double gamma_in_user_units(const ControllerLmi& C, const Eigen::VectorXd& x, const ControllerScaling& s) {
+  return C.lmi.value(C.g, x)(0, 0) * s.gamma_factor();
+}
+
 // What a recovered controller's certificate makes of the attempt.
 Recovered outcome_of(const ControllerCertificate& c) {
   if (c.passed) return Recovered::Certified;
@@ -233,7 +238,7 @@ Recovered recover_at(const SynthesisContext& x, const ControllerLmi& C, const sd
     }
     pt = controller_point(B, Ps, sb.x);
     lmi_at_point = B.lmi.evaluate(sb.x);
-    r.gamma_optimal = gamma_star * sc.gamma_factor();
+    r.gamma_optimal = gamma_in_user_units(C, sol.x, sc);
     r.backoff = b;
   }
   double cond_N = 0;
@@ -299,7 +304,7 @@ bool recover_certified(const SynthesisContext& x, const ControllerLmi& C, const 
 // reported with the wider ball's γ* beside it. True if r is certified.
 bool recover_in_narrower_balls(const SynthesisContext& x, const ControllerLmi& C, const sdp::Solution& sol,
                                ControllerSynthesisResult& r, std::string& why) {
-  const double gamma_wide = C.lmi.value(C.g, sol.x)(0, 0) * x.S.scaling.gamma_factor();
+  const double gamma_wide = gamma_in_user_units(C, sol.x, x.S.scaling);
   const std::optional<double> wide_norm =
       outcome_of(r.certificate) == Recovered::Certified ? std::optional<double>(r.certificate.closed_loop_hinf_norm)
                                                         : std::nullopt;
@@ -332,7 +337,7 @@ bool recover_in_narrower_balls(const SynthesisContext& x, const ControllerLmi& C
       here.narrower_ball = radius;
       here.gamma_optimal_wider_ball = gamma_wide;
       here.wider_ball_certified_norm = wide_norm;
-      if (!here.gamma_optimal) here.gamma_optimal = C.lmi.value(C.g, sn.x)(0, 0) * x.S.scaling.gamma_factor();
+      if (!here.gamma_optimal) here.gamma_optimal = gamma_in_user_units(C, sn.x, x.S.scaling);
       r = std::move(here);
       certified = true;
     }
@@ -462,7 +467,7 @@ ControllerSynthesisResult synthesize_controller(const hinf::GeneralisedPlant& P,
     free.pole_disk_radius.reset();
     const ControllerLmi F = build_controller_lmi(S.plant, free);
     const sdp::Solution sf = minimize_gamma(F, settings, nullptr, "controller LMI without the pole disk");
-    r.gamma_without_disk = F.lmi.value(F.g, sf.x)(0, 0) * S.scaling.gamma_factor();
+    r.gamma_without_disk = gamma_in_user_units(F, sf.x, S.scaling);
     r.newton_iterations += sf.newton_total;
     r.time_s += sf.elapsed_s;
   }
