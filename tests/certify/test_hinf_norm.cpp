@@ -23,6 +23,7 @@
 #include "hinf/certify/stability.hpp"
 #include "hinf/certify/worst_case.hpp"
 #include "hinf/common/error.hpp"
+#include "hinf/models/discretise.hpp"
 #include "example_plants.hpp"
 #include "random_plants.hpp"
 
@@ -274,6 +275,48 @@ TEST(DiscreteHinfNorm, MultiStepLevelSetIterationsAgainstDenseSweep) {
     EXPECT_LE(res.norm, sweep * (1 + 1e-6)) << "t = " << t;
   }
   EXPECT_GE(multi, 1) << "coverage guard: no system needed a second level-set iteration";
+}
+
+// A loop whose level-set crossings the pencil computes off the unit circle: the double
+// integrator of tests/data/controllers/double-integrator.yaml with its H∞ controller (a pole
+// at −1.1e8), both held over T = 0.01 s (zero-order hold). Its crossings near z = 1 come out
+// at | |z| − 1 | ≈ 1.5e-3; the former tolerance of 1e-5 on | |z| − 1 | missed them and
+// certified 2.669514 for a norm of 2.671518 (Octave's norm 2.671517669, its grid 2.671517692).
+TEST(DiscreteHinfNorm, PencilCrossingsOffTheCircleAreNotMissed) {
+  const double T = 0.01;
+  MatrixXd A(2, 2), B1(2, 2), B2(2, 1), C1(2, 2), D12(2, 1), C2(1, 2), D21(1, 2);
+  A << 0, 1, 0, 0;
+  B1 << 0, 0, 1, 0;
+  B2 << 0, 1;
+  C1 << 1, 0, 0, 0;
+  D12 << 0, 1;
+  C2 << 1, 0;
+  D21 << 0, 1;
+  MatrixXd AK(2, 2), BK(2, 1), CK(1, 2);
+  AK << -0.90087841647426348, 12713.256940947256, -12713.256940947243, -113851337.33643471;
+  BK << 0.31524326895177696, 17248.416699418496;
+  CK << 0.31524326895177862, -17248.416699418507;
+  // zero-order holds: exp(T [F, I; 0, 0]) = [F_d, Γ; 0, I]
+  const auto hold = [T](const MatrixXd& F, MatrixXd& Fd, MatrixXd& Gamma) {
+    const auto s = hinf::models::discretise(F, T, hinf::models::Discretisation::ZeroOrderHold);
+    Fd = s.A;
+    Gamma = s.Gamma;
+  };
+  MatrixXd Ad, Gp, AKd, GK;
+  hold(A, Ad, Gp);
+  hold(AK, AKd, GK);
+  // the closed loop (147) of x(k+1) = Ad x + Γ B1 w + Γ B2 u with u = CK xK, xK(k+1) = AKd xK + ΓK BK y
+  const MatrixXd BKd = GK * BK, Bp1 = Gp * B1, Bp2 = Gp * B2;
+  MatrixXd Acl(4, 4), Bcl(4, 2), Ccl(2, 4);
+  Acl << Ad, Bp2 * CK, BKd * C2, AKd;
+  Bcl << Bp1, BKd * D21;
+  Ccl << C1, D12 * CK;
+  const MatrixXd Dcl = MatrixXd::Zero(2, 2);
+  const hinf::certify::HinfNorm res = hinf::certify::discrete_hinf_norm(Acl, Bcl, Ccl, Dcl);
+  const double sweep = sweep_max(Acl, Bcl, Ccl, Dcl);
+  EXPECT_GT(sweep, 2.6715);
+  EXPECT_LE(sweep, res.norm * (1 + 1e-12));  // a certified upper value is above every sample
+  EXPECT_LE(res.norm, sweep * (1 + 1e-6));
 }
 
 TEST(DiscreteHinfNorm, PeakValueAndBoundedRealRiccatiRecursion) {
