@@ -364,11 +364,15 @@ PYBIND11_MODULE(_hinf, m) {
 
   // `hinf-synth codegen`: the four C99 files of a gains or controller file (its text, or read
   // from `path` as the executable reads it when `text` is None), in memory ({name: text});
-  // written into `out` (atomically, never over an input) when given.
+  // written into `out` (atomically, never over an input) when given. With `tustin` or `zoh` (a
+  // period, s) and `config`: the continuous-time controller file at `path` discretised, its
+  // sampled loop certified (CheckFailed with the report when it is not), and NAME_controller.yaml
+  // (the discrete controller file) beside the C files.
   m.def(
       "codegen",
       [](std::optional<std::string> text, const std::string& path, const std::string& prefix, const std::string& real,
-         int vector_steps, std::optional<double> tustin, std::optional<std::string> out) {
+         int vector_steps, std::optional<double> tustin, std::optional<double> zoh, const std::string& config,
+         std::optional<std::string> out) {
         hinf::codegen::CodegenOptions options;
         options.prefix = prefix;
         if (real != "double" && real != "float")
@@ -376,12 +380,19 @@ PYBIND11_MODULE(_hinf, m) {
         options.real = real == "float" ? hinf::codegen::CodegenOptions::Real::Float : hinf::codegen::CodegenOptions::Real::Double;
         options.generator = std::string("hinf-synth ") + hinf::synth::tool_version();
         options.vector_steps = vector_steps;
-        options.tustin_period = tustin;
         const hinf::codegen::GeneratedFiles files = without_gil([&] {
           hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
+          if ((tustin || zoh) && text)
+            throw hinf::Error(hinf::ErrorCode::InvalidInput, "tustin/zoh: give the controller file's path", "tustin");
+          const auto sampled = hinf::synth::discretise_for_codegen(path, config, tustin, zoh);
+          if (sampled && !sampled->holds) throw hinf::Error(hinf::ErrorCode::CheckFailed, sampled->report);
+          if (sampled) text = sampled->file;
           if (!text) text = hinf::read_input_file(path, "gains or controller file", hinf::kMaxGainsBytes);
           hinf::codegen::GeneratedFiles g = hinf::codegen::generate_c_for_file(*text, path, options);
-          if (out) hinf::codegen::write_generated_files(g, *out, {path});
+          if (sampled) g.files.push_back({prefix + "_controller.yaml", sampled->file});
+          std::vector<std::string> inputs{path};
+          if (!config.empty()) inputs.push_back(config);
+          if (out) hinf::codegen::write_generated_files(g, *out, inputs);
           return g;
         });
         py::dict d;
@@ -389,7 +400,8 @@ PYBIND11_MODULE(_hinf, m) {
         return d;
       },
       py::arg("text"), py::arg("path"), py::arg("prefix"), py::arg("real") = "double", py::arg("vector_steps") = 50,
-      py::arg("tustin") = py::none(), py::arg("out") = py::none());
+      py::arg("tustin") = py::none(), py::arg("zoh") = py::none(), py::arg("config") = "",
+      py::arg("out") = py::none());
 
   m.def("parse_problem", [](const std::string& text, const std::string& name) {
     return std::shared_ptr<Problem>(hinf::synth::parse_problem(text, name));

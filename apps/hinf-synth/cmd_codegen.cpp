@@ -1,15 +1,19 @@
 // hinf-synth codegen GAINS.yaml --prefix NAME -o DIR [--real double|float] [--json]
-// Writes DIR/NAME.h, DIR/NAME.c (the filter, C99), DIR/NAME_vectors.h and
-// DIR/NAME_check.c (test vectors and an on-target check driver). docs/codegen.md.
+//                   [--tustin T | --zoh T  --config CONFIG]
+// Writes DIR/NAME.h, DIR/NAME.c (the filter or controller, C99), DIR/NAME_vectors.h and
+// DIR/NAME_check.c (test vectors and an on-target check driver); a continuous-time controller
+// discretised at T (its sampled loop certified by the synthesis API's discretise job) also
+// DIR/NAME_controller.yaml, the discrete controller file. docs/codegen.md.
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
-#include "hinf/synth/api.hpp"  // json_schema
+#include "hinf/synth/api.hpp"  // json_schema, load_problem, Problem::discretise
 #include "hinf/common/input_file.hpp"
 #include "hinf/codegen/codegen.hpp"
 
@@ -27,7 +31,8 @@ void add_codegen(CLI::App& app, Action& action) {
     std::string old_out;  // --out, the older spelling of -o/--output (docs/cli.md)
     std::string real = "double";
     int vector_steps = 50;
-    std::optional<double> tustin;  // s; a continuous-time controller discretised at this period
+    std::optional<double> tustin, zoh;  // s; a continuous-time controller discretised at this period
+    std::string config;                 // its config, whose plant the sampled loop is certified on
     bool json = false;
     bool quiet = false;
     bool verbose = false;
@@ -48,9 +53,16 @@ void add_codegen(CLI::App& app, Action& action) {
                   "Number of steps in the generated test vectors")
       ->check(CLI::Range(1, 2000))
       ->capture_default_str();
-  cmd->add_option("--tustin", args->tustin,
-                  "Period (s) at which a continuous-time controller file is discretised by Tustin's rule "
-                  "(docs/maths.md (161))");
+  auto* tustin = cmd->add_option("--tustin", args->tustin,
+                                 "Period (s) at which a continuous-time controller file is discretised by Tustin's "
+                                 "rule (docs/maths.md (161)); needs --config: the sampled loop is certified");
+  cmd->add_option("--zoh", args->zoh,
+                  "Period (s) at which a continuous-time controller file is discretised by a zero-order hold "
+                  "(docs/maths.md (161a)); needs --config")
+      ->excludes(tustin);
+  cmd->add_option("--config", args->config,
+                  "The controller's config (with --tustin/--zoh): the loop of the discretised controller and the "
+                  "plant sampled at the same period is certified on it, its gamma recorded in the code");
   add_quiet_flag(*cmd, args->quiet);
   add_verbose_flag(*cmd, args->verbose);
   cmd->add_flag("--json", args->json, "print JSON (schema hinf-synth.codegen/1: the files written) instead of text");
@@ -67,16 +79,28 @@ void add_codegen(CLI::App& app, Action& action) {
                                            : hinf::codegen::CodegenOptions::Real::Double;
       options.generator = "hinf-synth " HINF_VERSION;
       options.vector_steps = args->vector_steps;
-      options.tustin_period = args->tustin;
       hinf::codegen::validate_codegen_prefix(options.prefix);  // before touching any file
       const Stages stage(args->verbose, "codegen");
-      const std::string text = stage("read " + args->gains, [&] {
+      // a continuous-time controller discretised, its sampled loop certified (docs/maths.md (161b))
+      const std::optional<synth::DiscretiseOutcome> sampled = stage("discretise and certify the sampled loop", [&] {
+        return synth::discretise_for_codegen(args->gains, args->config, args->tustin, args->zoh);
+      });
+      if (sampled && !sampled->holds) {
+        if (!args->quiet) std::cout << (args->json ? sampled->json + "\n" : sampled->report);
+        throw Error(ErrorCode::CheckFailed, args->gains + ": the sampled loop is not certified (" +
+                                                (args->quiet ? "-q: not shown" : "above") + "); nothing written");
+      }
+      if (sampled && !args->json && !args->quiet) std::cout << sampled->report;
+      const std::string text = sampled ? sampled->file : stage("read " + args->gains, [&] {
         return hinf::read_input_file(args->gains, "gains or controller file", hinf::kMaxGainsBytes);
       });
-      const hinf::codegen::GeneratedFiles files = stage("C generated and its test vectors computed", [&] {
+      hinf::codegen::GeneratedFiles files = stage("C generated and its test vectors computed", [&] {
         return hinf::codegen::generate_c_for_file(text, args->gains, options);
       });
-      stage("wrote " + args->out, [&] { hinf::codegen::write_generated_files(files, args->out, {args->gains}); });
+      if (sampled) files.files.push_back({options.prefix + "_controller.yaml", sampled->file});
+      std::vector<std::string> inputs{args->gains};
+      if (!args->config.empty()) inputs.push_back(args->config);
+      stage("wrote " + args->out, [&] { hinf::codegen::write_generated_files(files, args->out, inputs); });
       Json written = Json::array();
       for (const auto& f : files.files) {
         const std::string path = (std::filesystem::path(args->out) / f.name).lexically_normal().string();
@@ -91,6 +115,7 @@ void add_codegen(CLI::App& app, Action& action) {
         j["real"] = args->real;
         j["out"] = args->out;
         j["files"] = std::move(written);
+        if (sampled) j["discretised"] = Json::parse(sampled->json);
         print_json(j);
       }
       return 0;

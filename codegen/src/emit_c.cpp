@@ -111,6 +111,7 @@ struct Vocabulary {
   std::string out, OUT;        // output variable and its macro suffix: z / NZ, u / NU
   std::string out_dimension;   // comment of the output dimension macro
   std::string source_format;   // "Gains: format hinf-gains/1"
+  std::string gamma_note;      // what γ bounds, when not the file's own loop (a discretised controller)
 };
 
 Vocabulary filter_vocabulary() {
@@ -133,7 +134,7 @@ std::string provenance(const std::string& file, const std::string& what,
   if (!g.tool.empty()) os << ", written by " << comment_safe(g.tool);
   os << "\n * Config sha256: " << (g.config_sha256.empty() ? "not recorded" : g.config_sha256)
      << "\n * Gamma (certified l2-gain bound): "
-     << (g.gamma ? literal(*g.gamma, Real::Double) : std::string("not recorded"))
+     << (g.gamma ? literal(*g.gamma, Real::Double) : std::string("not recorded")) << v.gamma_note
      << "\n * Sample time: "
      << (g.sample_time ? literal(*g.sample_time, Real::Double) + " s: call the step function once per sample"
                        : std::string("not recorded (the gains file does not state it)"))
@@ -407,8 +408,8 @@ GeneratedFiles generate_controller_c(const runtime_yaml::ControllerFile& k, cons
   if (!k.discrete || !k.sample_time)
     throw Error(ErrorCode::InvalidInput,
                 "a continuous-time controller: the generated step is a discrete recursion; design it with "
-                "controller.time: discrete, or give --tustin PERIOD to discretise it by Tustin's rule "
-                "(docs/maths.md (161))");
+                "controller.time: discrete, or give --tustin PERIOD (or --zoh PERIOD) and --config CONFIG to "
+                "discretise it and certify the sampled loop (docs/maths.md (161)-(161c))");
   const Eigen::Index n = k.A_K.rows();
   if (n < 1 || k.A_K.cols() != n || k.B_K.rows() != n || k.B_K.cols() < 1 || k.C_K.cols() != n || k.C_K.rows() < 1 ||
       k.D_K.rows() != k.C_K.rows() || k.D_K.cols() != k.B_K.cols())
@@ -427,7 +428,13 @@ GeneratedFiles generate_controller_c(const runtime_yaml::ControllerFile& k, cons
   g.sample_time = k.sample_time;
   g.tool = k.tool;
   g.config_sha256 = k.config_sha256;
-  return emit_files(g, options, controller_vocabulary());
+  Vocabulary v = controller_vocabulary();
+  if (k.discretised)
+    v.gamma_note = "\n *   of the sampled loop (the plant sampled at the sample time, w and u held, docs/maths.md (161b));\n"
+                   " *   discretised by " + k.discretised->method + " from a continuous-time controller" +
+                   (k.discretised->continuous_gamma ? " of gamma " + literal(*k.discretised->continuous_gamma, Real::Double)
+                                                    : std::string());
+  return emit_files(g, options, v);
 }
 
 }  // namespace hinf::codegen

@@ -149,16 +149,19 @@ def kalman(config):
     return SynthesisResult(_call(_problem(config).kalman))
 
 
-def codegen(gains, prefix, real="double", vector_steps=50, tustin=None, out=None):
+def codegen(gains, prefix, real="double", vector_steps=50, tustin=None, zoh=None, config=None, out=None):
     """`hinf-synth codegen`: the C99 files (NAME.h, NAME.c, NAME_vectors.h, NAME_check.c) of a gains
     or controller file (a path, or a SynthesisResult) as {name: text}; also written into the
-    directory `out` when given (atomically, never over an input)."""
+    directory `out` when given (atomically, never over an input). With `tustin` or `zoh` (a
+    period, s) and `config` (the controller's config): a continuous-time controller file (a path)
+    discretised and its sampled loop certified (CheckFailed with the report when it is not);
+    NAME_controller.yaml, the discrete controller file, comes with the C files."""
     if isinstance(gains, SynthesisResult):
         text, source = gains.text, "<result>"
     else:
         text, source = None, os.fspath(gains)  # read by the library, as the executable reads it
-    return _call(_hinf.codegen, text, source, prefix, real, vector_steps, tustin,
-                 None if out is None else os.fspath(out))
+    return _call(_hinf.codegen, text, source, prefix, real, vector_steps, tustin, zoh,
+                 "" if config is None else os.fspath(config), None if out is None else os.fspath(out))
 
 
 def analyze(config, file, delta_points=41):

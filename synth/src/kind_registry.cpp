@@ -2,7 +2,9 @@
 // order — a new kind is one line here — and the filter kind for every config none of them
 // declares (its reader then names what is wrong with it).
 #include <array>
+#include <cmath>
 
+#include "hinf/common/number_text.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "kinds.hpp"
 
@@ -23,5 +25,28 @@ std::unique_ptr<Problem> parse_problem(const std::string& yaml_text, const std::
 }
 
 std::unique_ptr<Problem> load_problem(const std::string& path) { return parse_problem(read_config_bytes(path), path); }
+
+std::optional<DiscretiseOutcome> discretise_for_codegen(const std::string& controller_path,
+                                                        const std::string& config_path, std::optional<double> tustin,
+                                                        std::optional<double> zoh) {
+  if (tustin && zoh) throw Error(ErrorCode::InvalidInput, "--tustin and --zoh: give one discretisation", "tustin");
+  if (!tustin && !zoh) {
+    if (!config_path.empty())
+      throw Error(ErrorCode::InvalidInput, "--config: only with --tustin or --zoh (a continuous-time controller "
+                                           "discretised, its sampled loop certified)", "config");
+    return std::nullopt;
+  }
+  const ControllerSampling method = tustin ? ControllerSampling::Tustin : ControllerSampling::ZeroOrderHold;
+  const double period = tustin ? *tustin : *zoh;
+  const std::string key = std::string("--") + to_string(method);
+  if (!(std::isfinite(period) && period > 0))
+    throw Error(ErrorCode::InvalidInput, key + " = " + number_text(period) + ": must be a positive, finite period (s)",
+                key);
+  if (config_path.empty())
+    throw Error(ErrorCode::InvalidInput, std::string("--") + to_string(method) + ": give --config CONFIG, the "
+                "controller's config: the loop of the discretised controller is certified on its plant sampled at "
+                "the same period", "config");
+  return load_problem(config_path)->discretise(controller_path, period, method);
+}
 
 }  // namespace hinf::synth

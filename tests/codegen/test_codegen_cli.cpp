@@ -57,7 +57,7 @@ TEST(CodegenCli, BadPrefixExits2AndWritesNothing) {
 }
 
 // --tustin is refused, naming it, unless it is a positive finite period for a continuous-time
-// controller file (issue 34: --tustin nan was silently ignored).
+// controller file with its config (issue 34: --tustin nan was silently ignored).
 TEST(CodegenCli, TustinPeriodThatCannotApplyExits2AndWritesNothing) {
   TempDir dir;
   const std::string gains = HINF_TEST_PAPER_GAINS;
@@ -67,9 +67,16 @@ TEST(CodegenCli, TustinPeriodThatCannotApplyExits2AndWritesNothing) {
     EXPECT_NE(r.output.find(std::string("--tustin = ") + period + ": must be a positive, finite period"),
               std::string::npos) << period << ": " << r.output;
   }
-  const auto r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --tustin 0.1");
+  auto r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --tustin 0.1");
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("is not a controller file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--tustin: give --config CONFIG"), std::string::npos) << r.output;
+  const std::string controller_config = std::string(HINF_TEST_CONTROLLERS_DIR) + "/double-integrator.yaml";
+  r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --zoh 0.1 --config " + controller_config);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("expected 'hinf-controller/1'"), std::string::npos) << r.output;
+  r = codegen(gains + " --prefix nav -o " + (dir / "out") + " --config " + controller_config);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--config: only with --tustin or --zoh"), std::string::npos) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir.path()), "(empty)");
 }
 
@@ -171,8 +178,23 @@ TEST(CodegenCli, ContinuousControllerNeedsTustin) {
   EXPECT_NE(r.output.find("--tustin PERIOD"), std::string::npos) << r.output;
   EXPECT_EQ(hinf::test::list_dir(dir / "c"), "");
   r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "c") + " --tustin 0.1");
+  EXPECT_EQ(r.exit_code, 2) << r.output;  // the sampled loop is certified on the config's plant
+  EXPECT_NE(r.output.find("give --config CONFIG"), std::string::npos) << r.output;
+  r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "c") + " --tustin 0.1 --config " + config);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(hinf::test::read_text(dir / "c/hold.h").find("Sample time: 0.10000000000000001 s"), std::string::npos);
+  EXPECT_NE(r.output.find("certified: the sampled loop's l2 gain from w to z is at most"), std::string::npos);
+  const std::string header = hinf::test::read_text(dir / "c/hold.h");
+  EXPECT_NE(header.find("Sample time: 0.10000000000000001 s"), std::string::npos);
+  EXPECT_NE(header.find("of the sampled loop"), std::string::npos) << header;
+  EXPECT_EQ(header.find("Gamma (certified l2-gain bound): not recorded"), std::string::npos) << header;
+  // the discrete controller file beside the code: verify reads it on the config's sampled plant
+  r = hinf::test::run(cli() + " verify " + config + " " + (dir / "c/hold_controller.yaml"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // a period at which the sampled loop is unstable: exit 1, the reason, nothing written
+  r = codegen((dir / "k.yaml") + " --prefix hold -o " + (dir / "slow") + " --zoh 2 --config " + config);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("NOT certified: the sampled loop is unstable"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "slow"));
 }
 
 }  // namespace

@@ -174,12 +174,13 @@ def test_kalman_writes_the_executables_file(tmp_path):
 
 
 @pytest.mark.parametrize("gains, options", [("tests/golden/paper-dbar0.05.yaml", []),
-                                            ("tests/golden/tumbling-hold.yaml", ["--tustin", "0.1", "--real", "float"])])
+                                            ("tests/golden/tumbling-hold.yaml", ["--tustin", "0.1", "--real", "float",
+                                                                                 "--config", "configs/tumbling-hold.yaml"])])
 def test_codegen_gives_the_executables_files(gains, options, tmp_path):
-    run = subprocess.run([SYNTH, "codegen", path(gains), "--prefix", "nav", "-o", str(tmp_path / "cli")] + options,
-                         capture_output=True, text=True)
+    run = subprocess.run([SYNTH, "codegen", path(gains), "--prefix", "nav", "-o", str(tmp_path / "cli")] +
+                         [path(o) if o.endswith(".yaml") else o for o in options], capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
-    kwargs = {"tustin": 0.1, "real": "float"} if options else {}
+    kwargs = {"tustin": 0.1, "real": "float", "config": path("configs/tumbling-hold.yaml")} if options else {}
     files = hinf.codegen(path(gains), "nav", out=tmp_path / "py", **kwargs)
     assert sorted(files) == sorted(p.name for p in (tmp_path / "cli").iterdir())
     for name, text in files.items():
@@ -325,3 +326,25 @@ def test_the_runtime_ekf_on_a_linear_model_is_the_kalman_recursion():
         hinf.ekf(F, G, H, Q, -R)
     with pytest.raises(hinf.InvalidInput, match="y must have 3 entries"):
         f.update(np.ones(2))
+
+
+def test_codegen_discretises_a_continuous_controller_only_with_its_sampled_loop_certified(tmp_path):
+    config = path("tests/data/controllers/double-integrator.yaml")
+    k = tmp_path / "k.yaml"
+    hinf.synthesize(config).write(k)
+    with pytest.raises(hinf.InvalidInput) as err:
+        hinf.codegen(k, "hold", tustin=0.1)  # the sampled loop is certified on the config's plant
+    assert err.value.key == "config"
+    files = hinf.codegen(k, "hold", tustin=0.1, config=config)
+    assert "of the sampled loop" in files["hold.h"]
+    holds, report = hinf.verify(config, _written(tmp_path / "kd.yaml", files["hold_controller.yaml"]))
+    assert holds, report
+    with pytest.raises(hinf.CheckFailed) as err:
+        hinf.codegen(k, "hold", zoh=2.0, config=config, out=tmp_path / "slow")
+    assert "NOT certified: the sampled loop is unstable" in str(err.value)
+    assert not (tmp_path / "slow").exists()
+
+
+def _written(p, text):
+    p.write_text(text)
+    return p

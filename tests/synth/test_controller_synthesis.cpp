@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <random>
@@ -20,6 +21,8 @@
 #include "hinf/models/controller.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/controller_synthesis.hpp"
+#include "hinf/synth/api.hpp"
+#include "scratch_dir.hpp"
 #include "random_plants.hpp"
 
 namespace {
@@ -471,6 +474,21 @@ TEST(ControllerSynthesis, ContinuousNormByTheBilinearMapMatchesAFrequencyGrid) {
   }
   EXPECT_GE(h.norm, grid * (1 - 1e-12));
   EXPECT_LE(h.norm, grid * (1 + 1e-3));  // the grid misses the peak by little
+}
+
+// γ* = 0 exactly (tests/data/controllers/gamma-zero.yaml: w enters neither the state, z nor
+// y): the file says gamma: 0, and verify and check read it back (they refused it, "gamma = 0:
+// must be > 0", on this plant and on COMPleib's NN10).
+TEST(ControllerSynthesis, AZeroGammaIsReadBack) {
+  const std::string config = std::string(HINF_SOURCE_DIR) + "/tests/data/controllers/gamma-zero.yaml";
+  const auto problem = hinf::synth::load_problem(config);
+  const hinf::synth::SolveOutcome solved = problem->solve();
+  EXPECT_EQ(solved.gamma, 0.0);
+  const hinf::test::ScratchDir dir("gamma_zero");
+  std::ofstream(dir / "k.yaml") << solved.file;
+  EXPECT_TRUE(problem->verify(dir / "k.yaml").holds);
+  const hinf::synth::CheckOutcome checked = problem->check(dir / "k.yaml", 1e-6);
+  EXPECT_TRUE(checked.same) << checked.report;
 }
 
 }  // namespace

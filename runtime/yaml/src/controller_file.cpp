@@ -46,8 +46,8 @@ ControllerFile parse_controller_yaml(const std::string& text, const std::string&
     reader.fail(root["format"], "format: unsupported format '" + reader.word(root["format"], "format") +
                                     "', expected '" + kFormat + "'");
   const YamlMap top = reader.map(root, "", {"format", "tool", "config_sha256", "time", "sample_time", "dimensions",
-                                            "gamma", "gamma_optimal", "gamma_backoff", "gamma_without_disk", "robust_synthesis", "bound", "controller", "closed_loop_poles", "certificate",
-                                            "solver", "timing"});
+                                            "gamma", "gamma_optimal", "gamma_backoff", "gamma_without_disk", "robust_synthesis", "bound", "discretised", "controller", "closed_loop_poles",
+                                            "certificate", "solver", "timing"});
   top.required("format", std::string("expected 'format: ") + kFormat + "'");
   if (top.word("format") != kFormat)
     top.fail("format", "unsupported format '" + top.word("format") + "', expected '" + kFormat + "'");
@@ -62,7 +62,15 @@ ControllerFile parse_controller_yaml(const std::string& text, const std::string&
   } else if (top.has("sample_time")) {
     top.fail("sample_time", "only with time: discrete");
   }
-  if (top.has("gamma")) k.gamma = top.positive("gamma");
+  if (top.has("gamma")) k.gamma = top.nonnegative("gamma");  // 0: T_zw ≡ 0 (γ* = 0 exactly)
+  if (top.has("discretised")) {
+    if (!k.discrete) top.fail("discretised", "only with time: discrete");
+    const YamlMap d = top.map("discretised", {"method", "continuous_gamma", "plant_sampling"});
+    d.required("method", "tustin or zoh");
+    k.discretised = Discretised{d.choice("method", {"tustin", "zoh"}), std::nullopt};
+    if (d.has("continuous_gamma")) k.discretised->continuous_gamma = d.nonnegative("continuous_gamma");
+    if (d.has("plant_sampling")) d.choice("plant_sampling", {"zoh"});
+  }
   read_matrices(top, k);
   if (top.has("dimensions")) {
     const YamlMap d = top.map("dimensions", {"n_K", "ny", "nu"});

@@ -11,6 +11,7 @@
 #include "hinf/runtime_yaml/controller_file.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/controller_output.hpp"
+#include "hinf/synth/sampled_loop.hpp"
 #include "job_json.hpp"
 #include "kinds.hpp"
 #include "report_text.hpp"
@@ -34,7 +35,7 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     const Loaded in = load(path);
     // the certificate at the claimed γ (or at infinity: analysis only)
     ControllerCertificate c =
-        certify::certify_controller(cfg_.plant, in.controller, in.file.gamma.value_or(INFINITY), cfg_.design.checks());
+        certify::certify_controller(in.plant, in.controller, in.file.gamma.value_or(INFINITY), in.checks);
     return {controller_report::analysis(path, in.file.gamma, c, in.file.discrete),
             controller_report::analysis_json(cfg_.path, path, in.file.gamma, c), std::move(c)};
   }
@@ -42,13 +43,19 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
   VerifyOutcome verify(const std::string& path) const override {
     const Loaded in = load(path);
     const double gamma = stated_gamma(in.file.gamma, path + ": no 'gamma' to verify (use 'analyze')");
-    ControllerVerification v = verify_controller(cfg_, in.controller, gamma);
+    ControllerVerification v = verify_controller(in.plant, in.checks, in.controller, gamma);
     return {v.holds, controller_report::verification(gamma, v, in.file.discrete),
-            controller_report::verification_json(cfg_.path, path, gamma, v, in.file.discrete, disk()), std::move(v)};
+            controller_report::verification_json(cfg_.path, path, gamma, v, in.file.discrete,
+                                                 in.checks.pole_disk_radius.has_value()),
+            std::move(v)};
   }
 
   CheckOutcome check(const std::string& golden_path, double rtol, const JobObservers& observers) const override {
     const Loaded in = load(golden_path);
+    if (in.file.discretised)
+      throw Error(ErrorCode::InvalidInput, golden_path + ": a discretised controller (codegen --" +
+                                               in.file.discretised->method + "); check compares a synthesis with its " +
+                                               "continuous-time file");
     const double gamma = stated_gamma(in.file.gamma, golden_path + ": golden file has no 'gamma'");
     const ControllerSynthesisResult now =
         synthesize_controller(cfg_.plant, settings_for(observers), cfg_.design, observers.on_iteration);
@@ -58,6 +65,43 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
             controller_report::check_json(cfg_.path, golden_path, gamma, in.file.config_sha256, cfg_.sha256, now.gamma,
                                           cmp, rtol, in.file.discrete, disk()),
             std::move(cmp)};
+  }
+
+  DiscretiseOutcome discretise(const std::string& path, double period, ControllerSampling method) const override {
+    const std::string key = std::string("--") + to_string(method);
+    if (!(std::isfinite(period) && period > 0))
+      throw Error(ErrorCode::InvalidInput, key + " = " + num(period) + ": must be a positive, finite period (s)", key);
+    const runtime_yaml::ControllerFile file = runtime_yaml::load_controller_file(path);
+    if (file.discrete) throw Error(ErrorCode::InvalidInput, key + ": " + path + " is already a discrete-time controller", key);
+    if (cfg_.plant.time == TimeDomain::Discrete)
+      throw Error(ErrorCode::InvalidInput, key + ": " + cfg_.path + " is a discrete-time design", key);
+    if (file.config_sha256 != cfg_.sha256)
+      throw Error(ErrorCode::InvalidInput,
+                  key + ": " + path + " was synthesised from a config of sha256 " + file.config_sha256.substr(0, 12) +
+                      "..., not from " + cfg_.path + " (sha256 " + cfg_.sha256.substr(0, 12) + "...): the sampled loop "
+                      "is certified on the plant the controller was designed for",
+                  "config");
+    const Controller K{file.A_K, file.B_K, file.C_K, file.D_K};
+    certify::require_controller_fits(cfg_.plant, K);
+    const GeneralisedPlant sampled = sample_generalised_plant(cfg_.plant, period, key.c_str());
+    DiscretisedController d{sample_controller(K, period, method), true, to_string(method), file.gamma, 0, {}};
+    d.strictly_proper = d.controller.D_K.isZero(0);  // Tustin's D_d = D_K + (T/2) C_K M B_K (161)
+    const certify::ControllerChecks checks = sampled_checks(period);
+    // its norm first (at γ = ∞), then the certificate at that norm: the γ the file states
+    d.certificate = certify::certify_controller(sampled, d.controller, INFINITY, checks);
+    DiscretiseOutcome out;
+    out.holds = d.certificate.passed && std::isfinite(d.certificate.closed_loop_hinf_norm);
+    if (out.holds) {
+      d.gamma = d.certificate.closed_loop_hinf_norm;
+      d.certificate = certify::certify_controller(sampled, d.controller, d.gamma, checks);
+      out.holds = d.certificate.passed;
+    }
+    out.gamma = d.gamma;
+    if (out.holds) out.file = format_discretised_controller_yaml(d, sampled, {cfg_.path, cfg_.sha256, period});
+    out.report = controller_report::discretised(path, period, method, file.gamma, out.holds, d.certificate);
+    out.json = controller_report::discretised_json(cfg_.path, path, period, method, file.gamma, out.holds, d.certificate);
+    out.certificate = std::move(d.certificate);
+    return out;
   }
 
   std::string export_sdpa() const override {
@@ -73,9 +117,14 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
   }
 
  private:
+  // A controller file with the plant and checks its certificate is computed on: the config's,
+  // or — a controller discretised from this continuous design (codegen --tustin/--zoh) —
+  // the config's plant sampled at the file's period (docs/maths.md (161b)).
   struct Loaded {
     runtime_yaml::ControllerFile file;
     Controller controller;
+    GeneralisedPlant plant;
+    certify::ControllerChecks checks;
   };
   bool disk() const { return cfg_.design.pole_disk_radius.has_value(); }
   std::optional<double> period() const {
@@ -87,6 +136,15 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     in.file = runtime_yaml::load_controller_file(path);
     const GeneralisedPlant& P = cfg_.plant;
     const bool discrete = P.time == TimeDomain::Discrete;
+    in.controller = {in.file.A_K, in.file.B_K, in.file.C_K, in.file.D_K};
+    if (in.file.discretised && !discrete) {
+      certify::require_controller_fits(P, in.controller);
+      in.plant = sample_generalised_plant(P, *in.file.sample_time, "sample_time");
+      in.checks = sampled_checks(*in.file.sample_time);
+      return in;
+    }
+    in.plant = P;
+    in.checks = cfg_.design.checks();
     if (in.file.discrete != discrete)
       throw Error(ErrorCode::InvalidInput, path + ": a " + (in.file.discrete ? "discrete" : "continuous") +
                                                "-time controller, but " + cfg_.path + " is a " + to_string(P.time) +
@@ -94,8 +152,14 @@ class ControllerProblem final : public ConfiguredProblem<ControllerConfig> {
     if (discrete && std::abs(*in.file.sample_time - P.sample_time) > 1e-12 * P.sample_time)
       throw Error(ErrorCode::InvalidInput, path + ": sample_time " + num(*in.file.sample_time) +
                                                " s, but the config's is " + num(P.sample_time) + " s");
-    in.controller = {in.file.A_K, in.file.B_K, in.file.C_K, in.file.D_K};
     return in;
+  }
+  // The sampled loop's checks (docs/maths.md (161c)): the robust channel sampled with the
+  // plant; a continuous design's pole disk is no region of the z-plane, and is not checked.
+  certify::ControllerChecks sampled_checks(double period) const {
+    certify::ControllerChecks c;
+    if (cfg_.design.robust) c.robust = sample_channel(cfg_.plant, *cfg_.design.robust, period);
+    return c;
   }
 };
 

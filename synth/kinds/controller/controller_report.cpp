@@ -1,6 +1,8 @@
 // The controller kind's reports (controller_report.hpp).
 #include "controller_report.hpp"
 
+#include <cmath>
+
 #include "hinf/synth/controller_output.hpp"
 #include "job_json.hpp"
 #include "report_text.hpp"
@@ -143,6 +145,37 @@ std::string check_json(const std::string& config_path, const std::string& golden
       cmp.golden_recertified ? certificate_json(*cmp.golden_recertified, golden_gamma, discrete, disk) : Json(nullptr);
   j["golden_config_sha256"] = golden_sha256.empty() ? Json(nullptr) : Json(golden_sha256);
   j["config_sha256"] = config_sha256;
+  return json_line(j);
+}
+
+std::string discretised(const std::string& controller_path, double period, ControllerSampling method,
+                        std::optional<double> continuous_gamma, bool holds, const ControllerCertificate& c) {
+  std::string out = "controller            " + controller_path +
+                    (continuous_gamma ? " (continuous loop: gamma " + num(*continuous_gamma) + ")" : "") + "\n" +
+                    "discretised           " + (method == ControllerSampling::Tustin ? "Tustin's rule" : "zero-order hold") +
+                    " at T = " + num(period) + " s; the plant sampled at T, w and u held (docs/maths.md (161b))\n" +
+                    certificate_lines(c, true);
+  if (holds)
+    return out + "certified: the sampled loop's l2 gain from w to z is at most " + num(c.closed_loop_hinf_norm) + "\n";
+  return out + "NOT certified: the sampled loop " +
+         (!c.stable ? std::string("is unstable (spectral radius ") + num(c.stability_margin_value) + " >= 1)"
+                    : !c.robustly_stable ? "fails the robust channel's small-gain test (‖T_qp‖∞ = " +
+                                               num(*c.robust_channel_norm) + " >= 1)"
+                                         : std::string("has no finite certified norm")) +
+         "; sample faster or design for the discrete plant (time: discrete)\n";
+}
+
+std::string discretised_json(const std::string& config_path, const std::string& controller_path, double period,
+                             ControllerSampling method, std::optional<double> continuous_gamma, bool holds,
+                             const ControllerCertificate& c) {
+  Json j = job_json::envelope("discretise", "controller", config_path);
+  j["controller"] = controller_path;
+  j["method"] = to_string(method);
+  j["sample_time"] = json_num(period);
+  j["continuous_gamma"] = continuous_gamma ? json_num(*continuous_gamma) : Json(nullptr);
+  j["holds"] = holds;
+  j["gamma"] = holds ? json_num(c.closed_loop_hinf_norm) : Json(nullptr);
+  j["certificate"] = certificate_json(c, holds ? c.closed_loop_hinf_norm : INFINITY, true, false);
   return json_line(j);
 }
 

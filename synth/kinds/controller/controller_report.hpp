@@ -6,6 +6,7 @@
 
 #include "hinf/synth/controller_config.hpp"
 #include "hinf/synth/controller_regression.hpp"
+#include "hinf/synth/sampled_loop.hpp"
 
 namespace hinf::synth::controller_report {
 
@@ -25,5 +26,13 @@ std::string verification_json(const std::string& config_path, const std::string&
 std::string check_json(const std::string& config_path, const std::string& golden_path, double golden_gamma,
                        const std::string& golden_sha256, const std::string& config_sha256, double gamma_now,
                        const ControllerGoldenComparison& cmp, double rtol, bool discrete, bool disk);
+
+// codegen --tustin/--zoh: the sampled loop's certificate (docs/maths.md (161b)), `continuous_gamma`
+// the continuous file's γ; when it does not hold, says what failed.
+std::string discretised(const std::string& controller_path, double period, ControllerSampling method,
+                        std::optional<double> continuous_gamma, bool holds, const ControllerCertificate& c);
+std::string discretised_json(const std::string& config_path, const std::string& controller_path, double period,
+                             ControllerSampling method, std::optional<double> continuous_gamma, bool holds,
+                             const ControllerCertificate& c);
 
 }  // namespace hinf::synth::controller_report

@@ -54,6 +54,13 @@ class FilterProblem final : public ConfiguredProblem<SynthConfig> {
     return outcome("kalman", filter_report::kalman(r), std::move(r));
   }
 
+  DiscretiseOutcome discretise(const std::string& path, double, ControllerSampling method) const override {
+    throw Error(ErrorCode::InvalidInput,
+                std::string("--") + to_string(method) + ": " + cfg_.path + " is a filter config; a controller file (" +
+                    path + ") is discretised against its controller config (controller:)",
+                "config");
+  }
+
   std::string export_sdpa() const override {
     return synthesis_sdpa(cfg_.plant, cfg_.settings,
                           "from " + cfg_.path + " (sha256 " + cfg_.sha256 + "), by hinf-synth " + tool_version() +

@@ -23,9 +23,6 @@ struct CodegenOptions {
   std::string generator = "hinf-synth";  // provenance, e.g. "hinf-synth 0.1.0"
   int vector_steps = 50;              // length N of the test-vector sequence
   std::uint64_t vector_seed = 0x48494e46u;  // seed of the test-vector inputs ("HINF")
-  // generate_c_for_file only: the period (s) at which a continuous-time controller file is
-  // discretised by Tustin's rule (docs/maths.md (161)); hinf-synth codegen --tustin.
-  std::optional<double> tustin_period;
 };
 
 struct GeneratedFile {
@@ -50,14 +47,13 @@ GeneratedFiles generate_c(const runtime_yaml::GainsFile& gains, const CodegenOpt
 // The same four files for a discrete-time controller file (docs/maths.md (146)): NAME_NX,
 // NAME_NY, NAME_NU; NAME_step(s, y, u) writes u = C_K x_K + D_K y, then x_K ← A_K x_K + B_K y;
 // NAME_init(s, u0) sets x_K = pinv(C_K) u0 (u0 = 0: at rest). A continuous-time controller is
-// refused (Error InvalidInput): discretise it first (hinf::tustin).
+// refused (Error InvalidInput): discretise it first, its sampled loop certified
+// (hinf::synth::Problem::discretise, `hinf-synth codegen --tustin T --config CONFIG`).
 GeneratedFiles generate_controller_c(const runtime_yaml::ControllerFile& controller, const CodegenOptions& options);
 
 // The four files for the text of a gains file (hinf-gains/1: generate_c) or a controller
-// file (hinf-controller/1: generate_controller_c, after Tustin's rule at
-// options.tustin_period if given) read from `path`, by the file's own `format:`.
-// Error(InvalidInput) as those, or naming --tustin when the period is not positive and
-// finite, the controller is already discrete, or the file is not a controller file.
+// file (hinf-controller/1: generate_controller_c) read from `path`, by the file's own
+// `format:`. Error(InvalidInput) as those.
 GeneratedFiles generate_c_for_file(const std::string& text, const std::string& path, const CodegenOptions& options);
 
 // Writes every file into `directory` (created if missing). All files are first

@@ -9,6 +9,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -17,6 +18,7 @@
 #include "hinf/synth/controller_regression.hpp"
 #include "hinf/synth/controller_synthesis.hpp"
 #include "hinf/synth/regression.hpp"
+#include "hinf/synth/sampled_loop.hpp"
 #include "hinf/synth/synthesis.hpp"
 
 namespace hinf::synth {
@@ -75,6 +77,19 @@ struct CheckOutcome {
   std::variant<GoldenComparison, ControllerGoldenComparison> result;
 };
 
+// `codegen --tustin T` / `--zoh T`: a continuous-time controller file flown at period T, its
+// sampled loop certified on the config's plant sampled at T (docs/maths.md (161a)–(161c)).
+struct DiscretiseOutcome {
+  bool holds = false;  // the sampled loop is stable (and robustly stable with a channel)
+  double gamma = 0;    // when it holds: the sampled loop's certified ℓ2 gain from w to z
+  // When it holds: the discrete controller file (hinf-controller/1, `discretised:` section)
+  // with that γ; empty otherwise.
+  std::string file;
+  std::string report;  // text; when it does not hold, says what failed
+  std::string json;    // one line, schema "hinf-synth.discretise/1"
+  ControllerCertificate certificate;
+};
+
 // A parsed, validated config of one problem kind. Jobs are const and may run concurrently.
 class Problem {
  public:
@@ -100,6 +115,12 @@ class Problem {
   // worst-case gain it achieves — the H2 reference beside the H∞ design, as a gains file.
   // Error(InvalidInput) for a kind without one (a controller config).
   virtual SolveOutcome kalman() const = 0;
+  // `codegen --tustin/--zoh`: the continuous-time controller file at `controller_path`
+  // (synthesised from this config: its config_sha256 must be this config's) discretised at
+  // `period` by `method` and its sampled loop certified (DiscretiseOutcome). Error(InvalidInput)
+  // naming the period, the file, or a kind without controllers (a filter config).
+  virtual DiscretiseOutcome discretise(const std::string& controller_path, double period,
+                                       ControllerSampling method) const = 0;
 };
 
 // The `schema` key of a job's JSON, "hinf-synth.<job>/1" (docs/file-formats.md "JSON"): the
@@ -112,5 +133,13 @@ std::string json_schema(std::string_view job);
 std::unique_ptr<Problem> parse_problem(const std::string& yaml_text, const std::string& source_name);
 // The same from a file's exact bytes (size-capped, regular files only).
 std::unique_ptr<Problem> load_problem(const std::string& path);
+
+// `codegen … --tustin T | --zoh T --config CONFIG`: the discretise job of the config at
+// `config_path` on the controller file at `controller_path` (Problem::discretise); nullopt
+// when neither period is given. Error(InvalidInput) naming --config when a period comes
+// without it or it comes without a period, naming both periods when both are given.
+std::optional<DiscretiseOutcome> discretise_for_codegen(const std::string& controller_path,
+                                                        const std::string& config_path, std::optional<double> tustin,
+                                                        std::optional<double> zoh);
 
 }  // namespace hinf::synth

@@ -17,9 +17,11 @@ struct ControllerVerification {
   bool holds = false;                 // stable, in the disk, robust if asked, ‖T_zw‖∞ ≤ γ (1 + 1e-6)
 };
 
-// Error(InvalidInput) if the controller's dimensions do not fit the config's plant.
-ControllerVerification verify_controller(const ControllerConfig& config, const hinf::Controller& K,
-                                         double claimed_gamma);
+// Error(InvalidInput) if the controller's dimensions do not fit the plant. `P` and `checks`:
+// the config's (config.plant, config.design.checks()), or its sampled plant's for a
+// discretised controller (docs/maths.md (161b)).
+ControllerVerification verify_controller(const hinf::GeneralisedPlant& P, const certify::ControllerChecks& checks,
+                                         const hinf::Controller& K, double claimed_gamma);
 
 struct ControllerGoldenComparison {
   double gamma_relative_change = 0;  // |γ_now − γ_golden| / γ_golden
