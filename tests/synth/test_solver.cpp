@@ -127,7 +127,36 @@ TEST(Solver, NotRobustlyStableRefused) {
   P.H(0, 0) = 1.0;
   P.E = MatrixXd::Zero(1, 2);
   P.E(0, 0) = 0.2;  // F = 1: eigenvalue 1.1
-  expect_infeasible(P, "robustly", "1.1");
+  Settings augmented;  // the augmented filter's verdict; auto goes on to the observer form
+  augmented.form = hinf::synth::FormChoice::Augmented;
+  expect_infeasible(P, "robustly", "1.1", augmented);
+  // auto: the observer form, whose uncertainty acts on the error dynamics, and why
+  const hinf::synth::SynthesisResult r = hinf::synth::synthesize(P, Settings{});
+  EXPECT_EQ(r.filter.form, hinf::FilterForm::Observer);
+  EXPECT_TRUE(r.certificate.passed);
+  EXPECT_NE(r.augmented_infeasible.find("not robustly Schur stable"), std::string::npos) << r.augmented_infeasible;
+}
+
+// The same uncertainty on the mode y does not see: no observer form either (e₁'s pole 0.9 + 0.2 F
+// reaches 1.1 for every K). Auto reports both forms' outcomes; the augmented verdict alone is not
+// a verdict about auto, so the exit is the observer form's (no verified certificate there).
+TEST(Solver, AutoWhereNeitherFormExistsNamesBoth) {
+  Plant P = example_plant();
+  P.A << 0.9, 0.0, 0.0, 0.5;
+  P.C << 0, 1;
+  P.H = MatrixXd::Zero(2, 1);
+  P.H(0, 0) = 1.0;
+  P.E = MatrixXd::Zero(1, 2);
+  P.E(0, 0) = 0.2;
+  try {
+    (void)hinf::synth::synthesize(P, Settings{});
+    FAIL() << "a filter for a plant without one";
+  } catch (const hinf::Error& e) {
+    EXPECT_NE(e.code(), hinf::ErrorCode::Ok);
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("Theorem 1's augmented filter: plant is not robustly Schur stable"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("the observer form"), std::string::npos) << msg;
+  }
 }
 
 }  // namespace

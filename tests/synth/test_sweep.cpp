@@ -33,6 +33,7 @@ system:
 uncertainty:
   H: [[0], [0], [-1], [1]]
   E: [[1, -1, 0, 0]]
+filter: {form: augmented}   # Theorem 1's boundary (135); form auto goes on to the observer form
 )";
 
 std::string error_of(const std::function<void()>& f) {

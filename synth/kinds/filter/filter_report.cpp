@@ -108,7 +108,11 @@ std::string solve(const SynthesisResult& r) {
          std::to_string(r.solver.newton_iterations) + " Newton iterations, " + num(r.solver.time_s) + " s]\n" +
          "RMS error under unit white noise (H2 norm) " + num(r.certificate.h2_norm_nominal) +
          " (compare: hinf-synth kalman)\n" + stopped_short_line(r.solver) + "filter form: " + to_string(r.filter.form) +
-         (r.filter.filtered() ? ", filtered estimate" : "") + "; " + r.bound + "\n";
+         (r.filter.filtered() ? ", filtered estimate" : "") + "; " + r.bound + "\n" +
+         (r.augmented_infeasible.empty()
+              ? std::string()
+              : "filter.form: auto chose the observer form: Theorem 1's augmented filter is infeasible here (" +
+                    r.augmented_infeasible + ")\n");
 }
 
 std::string kalman(const SynthesisResult& r) {

@@ -193,9 +193,36 @@ SynthesisResult synthesize_augmented(const Plant& plant, const PlantScaling& sc,
   return res;
 }
 
-// The formulation to solve (docs/maths.md §18.4): Auto is Theorem 1's augmented filter for a
-// Schur-stable plant without a known input (the paper's problem) and the predicted estimate,
-// the observer form otherwise.
+// filter.form: auto on a Schur-stable plant (docs/maths.md §18.4): Theorem 1's augmented filter,
+// and — when it is infeasible (its verdict: not robustly stable, no quadratic certificate, or
+// the LMI verified infeasible) — the observer form, whose uncertainty acts on the error
+// dynamics (122) and which may exist where the augmented one does not. Infeasible in both:
+// exit 3 with both verdicts; the observer form failing otherwise: its error, the augmented
+// verdict beside it (a certificate about one form only is not one about `auto`).
+SynthesisResult synthesize_augmented_or_observer(const Plant& plant, const PlantScaling& sc, const Settings& settings,
+                                                 const IterationObserver& observer) {
+  try {
+    return synthesize_augmented(plant, sc, settings, observer);
+  } catch (const Error& augmented) {
+    if (augmented.code() != ErrorCode::Infeasible) throw;
+    try {
+      SynthesisResult res = synthesize_observer(plant, sc, settings, observer);
+      res.augmented_infeasible = augmented.what();
+      return res;
+    } catch (const Error& obs) {
+      throw Error(obs.code(),
+                  std::string(obs.code() == ErrorCode::Infeasible ? "infeasible in both forms of filter.form: auto: "
+                                                                  : "filter.form: auto: ") +
+                      "Theorem 1's augmented filter: " + augmented.what() + "; the observer form (docs/maths.md §18): " +
+                      obs.what(),
+                  obs.key().empty() ? augmented.key() : obs.key());
+    }
+  }
+}
+
+// The formulation to solve first (docs/maths.md §18.4): Auto is Theorem 1's augmented filter
+// for a Schur-stable plant without a known input (the paper's problem) and the predicted
+// estimate — with the observer form after it if it is infeasible — the observer form otherwise.
 FilterForm resolve_form(const Plant& plant, const Settings& settings) {
   if (settings.form == FormChoice::Augmented) return FilterForm::Augmented;
   if (settings.form == FormChoice::Observer || plant.r() > 0 || settings.estimate == Estimate::Filtered)
@@ -215,7 +242,8 @@ SynthesisResult synthesize(const Plant& user_plant, const Settings& settings, co
   const Plant plant = scaled_plant(user_plant, sc);
   const FilterForm form = resolve_form(plant, settings);
   SynthesisResult res = form == FilterForm::Observer ? synthesize_observer(plant, sc, settings, observer)
-                                                     : synthesize_augmented(plant, sc, settings, observer);
+                        : settings.form == FormChoice::Auto ? synthesize_augmented_or_observer(plant, sc, settings, observer)
+                                                            : synthesize_augmented(plant, sc, settings, observer);
   if (!res.certificate.passed)
     throw Error(ErrorCode::NumericalFailure,
                 "certificate failed, no filter written:" + failed_checks(res.certificate, res.gamma));

@@ -81,6 +81,9 @@ struct SynthesisResult {
   double gamma_squared = 0;
   Certificate certificate;
   SolverInfo solver;
+  // With filter.form: auto, when Theorem 1's augmented filter was infeasible and the observer
+  // form was solved instead: why the augmented one was (its verdict); empty otherwise.
+  std::string augmented_infeasible;
 };
 
 // What γ bounds for a filter of this form on a plant with or without uncertainty: which
