@@ -2,9 +2,7 @@
 // order — a new kind is one line here — and the filter kind for every config none of them
 // declares (its reader then names what is wrong with it).
 #include <array>
-#include <cmath>
 
-#include "hinf/common/number_text.hpp"
 #include "hinf/synth/controller_config.hpp"
 #include "kinds.hpp"
 
@@ -39,9 +37,7 @@ std::optional<DiscretiseOutcome> discretise_for_codegen(const std::string& contr
   const ControllerSampling method = tustin ? ControllerSampling::Tustin : ControllerSampling::ZeroOrderHold;
   const double period = tustin ? *tustin : *zoh;
   const std::string key = std::string("--") + to_string(method);
-  if (!(std::isfinite(period) && period > 0))
-    throw Error(ErrorCode::InvalidInput, key + " = " + number_text(period) + ": must be a positive, finite period (s)",
-                key);
+  require_sample_period(period, key);
   if (config_path.empty())
     throw Error(ErrorCode::InvalidInput, std::string("--") + to_string(method) + ": give --config CONFIG, the "
                 "controller's config: the loop of the discretised controller is certified on its plant sampled at "

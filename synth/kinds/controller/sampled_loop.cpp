@@ -1,12 +1,19 @@
 // sample_controller, sample_generalised_plant, sample_channel (sampled_loop.hpp).
 #include "hinf/synth/sampled_loop.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "hinf/common/error.hpp"
+#include "hinf/common/number_text.hpp"
 #include "hinf/models/discretise.hpp"
 
 namespace hinf::synth {
+
+void require_sample_period(double T, const std::string& key) {
+  if (!(std::isfinite(T) && T > 0))
+    throw Error(ErrorCode::InvalidInput, key + " = " + number_text(T) + ": must be a positive, finite period (s)", key);
+}
 
 Controller sample_controller(const Controller& K, double T, ControllerSampling method) {
   if (method == ControllerSampling::Tustin) return tustin(K, T);

@@ -4,6 +4,8 @@
 // over the sample, as a DAC holds u), y and z read at the sample instants. The sampled loop's
 // ℓ2 gain from w to z is what a discrete certificate proves about the controller as flown.
 #pragma once
+#include <string>
+
 #include "hinf/models/controller.hpp"
 #include "hinf/models/generalised_plant.hpp"
 
@@ -12,6 +14,9 @@ namespace hinf::synth {
 enum class ControllerSampling { Tustin, ZeroOrderHold };
 
 inline const char* to_string(ControllerSampling m) { return m == ControllerSampling::Tustin ? "tustin" : "zoh"; }
+
+// Error(InvalidInput) naming `key` ("--tustin", "--zoh") unless T is positive and finite.
+void require_sample_period(double T, const std::string& key);
 
 // The controller at period T: Tustin's rule (161), or the zero-order hold (161a),
 // A_d = e^{A_K T}, B_d = ∫₀ᵀ e^{A_K s} ds B_K, C_d = C_K, D_d = D_K.
