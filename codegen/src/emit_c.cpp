@@ -116,11 +116,11 @@ struct Vocabulary {
 
 Vocabulary filter_vocabulary() {
   return {false, "robust H-infinity filter", "A_F", "B_F", "C_F", "D_F", "z", "NZ", "estimated-signal dimension l",
-          "Gains: format hinf-gains/1"};
+          "Gains: format hinf-gains/1", ""};
 }
 Vocabulary controller_vocabulary() {
   return {true, "H-infinity output-feedback controller", "A_K", "B_K", "C_K", "D_K", "u", "NU", "control dimension",
-          "Controller: format hinf-controller/1"};
+          "Controller: format hinf-controller/1", ""};
 }
 
 std::string provenance(const std::string& file, const std::string& what,

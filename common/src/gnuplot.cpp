@@ -26,13 +26,15 @@ std::string gnuplot_quoted(const std::string& text) {
 
 std::string gnuplot_stacked_figure(const std::string& png, const std::string& title, int panels,
                                    const std::function<std::string(int)>& ylabel,
-                                   const std::function<std::string(int)>& curves) {
+                                   const std::function<std::string(int)>& curves,
+                                   const std::function<std::string(int)>& before) {
   std::string gp = "set output " + gnuplot_quoted(png) + "\nset multiplot layout " + std::to_string(panels) +
                    ",1 title " + gnuplot_quoted(title) + " noenhanced\n";
   for (int p = 0; p < panels; ++p)
     gp += "set ylabel " + gnuplot_quoted(ylabel(p)) + " noenhanced\n" +
           (p == panels - 1 ? "set xlabel 'time (s)'\n" : "unset xlabel\n") +
-          (p == 0 ? "set key outside right top\n" : "unset key\n") + "plot " + curves(p) + "\n";
+          (p == 0 ? "set key outside right top\n" : "unset key\n") + (before ? before(p) : std::string()) + "plot " +
+          curves(p) + "\n";
   return gp + "unset multiplot\n";
 }
 

@@ -82,7 +82,7 @@ Vector3 thrust(const Scenario& s, const Vector6& x, const Vector6& hinf_estimate
 
 PlotTraceSettings plot_trace_settings(const Scenario& s) {
   PlotTraceSettings p;
-  p.window_s = s.converge_window_s > 0 ? s.converge_window_s : s.duration / 100;
+  p.window_s = s.converge_window_s > 0 ? s.converge_window_s : s.duration / kPlotWindowsPerRun;
   p.stride = std::max(1L, (s.steps() + kPlotTracePoints - 1) / kPlotTracePoints);
   return p;
 }

@@ -28,7 +28,8 @@ using namespace sim_cli_test;
 
 namespace {
 fs::path fresh_dir(const std::string& name) { return sim_cli_test::fresh_dir("gps_ins", name); }
-const char* const kFigures[4] = {"fig1_position.png", "fig2_velocity.png", "fig3_attitude.png", "fig4_rate.png"};
+const char* const kFigures[5] = {"fig1_position.png", "fig2_velocity.png", "fig3_attitude.png", "fig4_rate.png",
+                                 "error_norms.png"};
 const char* const kErrorBlocks[5][2] = {{"position_max_m", "pos"},
                                         {"velocity_max_mps", "vel"},
                                         {"attitude_max_deg", ""},

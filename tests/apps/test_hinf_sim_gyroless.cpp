@@ -46,7 +46,7 @@ TEST(GyrolessScenario, RunsBrieflyAndSummaryMatchesTrajectory) {
   for (const char* png : {"fig1_torque.png", "fig2_aekf_sweep_torque_error.png", "fig3_aekf_sweep_attitude_error.png",
                           "fig4_astekf_sweep_torque_error.png", "fig5_astekf_sweep_attitude_error.png",
                           "fig6_aaekf_torque_error.png", "fig7_aaekf_attitude_error.png",
-                          "fig8_comparison_torque_error.png", "fig9_comparison_attitude_error.png"})
+                          "fig8_comparison_torque_error.png", "fig9_comparison_attitude_error.png", "error_norms.png"})
     EXPECT_EQ(slurp(out / png).substr(0, 8), "\x89PNG\r\n\x1a\n") << png;
   const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
   EXPECT_EQ(summary["scenario_family"].as<std::string>(), "gyroless_attitude");

@@ -48,7 +48,7 @@ TEST_P(HoldScenarios, RunsBrieflyAndSummaryMatchesTrajectory) {
   const fs::path out = fresh_dir(GetParam());
   ASSERT_EQ(run_scenario(GetParam(), "--duration 300", out), 0);
   for (const char* f : {"trajectory.csv", "summary.json", "runs.csv", "controller.yaml", "position.png",
-                        "velocity.png", "thrusters.png"})
+                        "velocity.png", "thrusters.png", "error_norms.png"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
   const YAML::Node m = summary["metrics"];

@@ -77,7 +77,8 @@ TEST(ManoeuvringScenario, RunsAndSummaryMatchesTrajectory) {
   const fs::path out = fresh_dir("brief");
   ASSERT_EQ(run_scenario(kFree, "", out), 0);
   for (const char* f : {"trajectory.csv", "runs.csv", "summary.json"}) EXPECT_TRUE(fs::exists(out / f)) << f;
-  for (const char* png : {"transient_position_error.png", "transient_velocity_error.png", "transient_manoeuvre_error.png"})
+  for (const char* png : {"transient_position_error.png", "transient_velocity_error.png", "transient_manoeuvre_error.png",
+                          "error_norms.png"})
     EXPECT_EQ(slurp(out / png).substr(0, 8), "\x89PNG\r\n\x1a\n") << png;
   const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
   EXPECT_EQ(summary["scenario_family"].as<std::string>(), "manoeuvring_target");

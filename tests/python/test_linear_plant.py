@@ -36,6 +36,21 @@ def test_shipped_scenario_measures_what_it_predicts(tmp_path):
     assert list(rows[0])[:6] == ["run", "seed", "filter", "delta_1", "error_rms", "predicted_error_rms"]
 
 
+def test_plots_of_one_run_and_of_a_campaign(tmp_path):
+    # run 0's components (error.png) and the Monte-Carlo figure of |z - zhat| (error_norms.png),
+    # with one run (raw norms under the moving RMS) and with several (median and band); the
+    # same statistics as without plots
+    for runs in ("1", "3"):
+        out, bare = tmp_path / ("plots" + runs), tmp_path / ("bare" + runs)
+        run = sim(SCENARIO, "-o", str(out), "--runs", runs, "--duration", "30", "-q")
+        assert run.returncode == 0, run.stderr
+        for png in ("error.png", "error_norms.png"):
+            assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", png
+        assert not [f for f in os.listdir(out) if f.endswith((".dat", ".gp"))]
+        assert sim(SCENARIO, "-o", str(bare), "--runs", runs, "--duration", "30", "-q", "--no-plots").returncode == 0
+        assert (out / "runs.csv").read_text() == (bare / "runs.csv").read_text()
+
+
 def test_a_written_gains_file_flies_the_same_filter(tmp_path):
     first = tmp_path / "first"
     assert sim(SCENARIO, "-o", str(first), "--duration", "20", "--no-plots", "-q").returncode == 0

@@ -146,4 +146,39 @@ TEST(Metrics, TraceBandIsTheRunsQuantilesPerInstant) {
   EXPECT_TRUE(std::isnan(b.median[2]));
 }
 
+// A stream family's traces of one run (run_traces): at most kPlotTracePoints instants, those of
+// the filter with the most samples; per filter and norm the moving RMS there (a constant norm c:
+// c; a norm that steps from 0 to 4 at t = 1000 with a 10 s window: 0 before, 4 from t = 1010);
+// a filter that stopped after 500 samples (gyroless's stopped filter) padded with NaN, and a
+// norm that became NaN (a diverged filter) NaN from there on.
+TEST(Metrics, RunTracesOfTwoFiltersOneStoppedAndOneDiverged) {
+  const long n = 2000;
+  std::vector<double> t(n), constant(n, 2.5), step(n), diverging(n, 1.0);
+  for (long k = 0; k < n; ++k) {
+    t[static_cast<std::size_t>(k)] = 0.5 * static_cast<double>(k);
+    step[static_cast<std::size_t>(k)] = t[static_cast<std::size_t>(k)] < 1000 ? 0.0 : 4.0;
+  }
+  for (long k = 1500; k < n; ++k) diverging[static_cast<std::size_t>(k)] = std::nan("");
+  const std::vector<double> stopped_t(t.begin(), t.begin() + 500);
+  const std::vector<double> stopped(500, 3.0);
+  const hinf::sim::RunTraces r =
+      hinf::sim::run_traces({stopped_t, t}, {{stopped, stopped}, {constant, step, diverging}}, 10.0);
+  const long stride = (n + hinf::sim::kPlotTracePoints - 1) / hinf::sim::kPlotTracePoints;  // 4
+  ASSERT_EQ(static_cast<long>(r.t.size()), (n + stride - 1) / stride);
+  ASSERT_LE(static_cast<long>(r.t.size()), hinf::sim::kPlotTracePoints);
+  ASSERT_EQ(r.rms.size(), 2u);
+  ASSERT_EQ(r.rms[0].size(), 2u);
+  ASSERT_EQ(r.rms[1].size(), 3u);
+  for (std::size_t j = 0; j < r.t.size(); ++j) {
+    EXPECT_EQ(r.t[j], 0.5 * static_cast<double>(j) * stride);
+    EXPECT_NEAR(r.rms[1][0][j], 2.5, 1e-14);
+    if (r.t[j] < 1000) EXPECT_EQ(r.rms[1][1][j], 0.0) << r.t[j];
+    if (r.t[j] >= 1010) EXPECT_NEAR(r.rms[1][1][j], 4.0, 1e-14) << r.t[j];
+    if (r.t[j] < 750) EXPECT_NEAR(r.rms[1][2][j], 1.0, 1e-14) << r.t[j];
+    else EXPECT_TRUE(std::isnan(r.rms[1][2][j])) << r.t[j];
+    if (r.t[j] < 250) EXPECT_NEAR(r.rms[0][0][j], 3.0, 1e-14) << r.t[j];
+    else EXPECT_TRUE(std::isnan(r.rms[0][1][j])) << r.t[j];
+  }
+}
+
 }  // namespace

@@ -189,13 +189,33 @@ std::string format_gps_ins_table1_csv(const GpsInsExperiment& e, const std::vect
   return out;
 }
 
+namespace {
+
+// The Monte-Carlo figure (error_norms.png): the norms of the four figures' errors in report
+// units, every filter, the steady-state window marked.
+template <int First>
+double error_norm_of(const GpsInsSample& s) { return error_in_report_units(s).segment<3>(First).norm(); }
+families::ErrorBand<GpsInsSample> gps_ins_error_band(const GpsInsExperiment& e) {
+  families::ErrorBand<GpsInsSample> band{{{"|position error| (m)", error_norm_of<ix::kPosition>},
+                                          {"|velocity error| (m/s)", error_norm_of<ix::kVelocity>},
+                                          {"|attitude error| (deg)", error_norm_of<ix::kAttitude>},
+                                          {"|rate error| (deg/s)", error_norm_of<ix::kRate>}},
+                                         {},
+                                         {{e.options.window_start, "window"}}};
+  if (e.options.window_end < e.scenario.duration) band.marks.emplace_back(e.options.window_end, "window end");
+  for (std::size_t f = 0; f < e.filters.size(); ++f) band.filters.push_back(f);
+  return band;
+}
+
+}  // namespace
+
 namespace families {
 
 const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample>& gps_ins_outputs() {
   static const StreamOutputs<GpsInsExperiment, GpsInsFilterStatistics, GpsInsSample> outputs{
       format_gps_ins_trajectory_csv,
       metrics_runs_csv_of<&gps_ins_metric_list, GpsInsExperiment, GpsInsFilterStatistics>,
-      format_gps_ins_summary_json, write_gps_ins_plots};
+      format_gps_ins_summary_json, write_gps_ins_plots, gps_ins_error_band};
   return outputs;
 }
 

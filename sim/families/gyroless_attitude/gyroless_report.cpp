@@ -201,6 +201,20 @@ void write_gyroless_plots(const std::string& dir, const GyrolessExperiment& e,
   run_plot_script(script, png, names);
 }
 
+// The Monte-Carlo figure (error_norms.png): |attitude error| and |torque error| of the named
+// filters (not the sweeps' entries), the steady-state window's start marked.
+double attitude_error_deg(const GyrolessSample& s) { return in_report_units(s.error).segment<3>(rb::kAttitudeError).norm(); }
+double torque_error_nm(const GyrolessSample& s) { return s.error.segment<3>(rb::kTorqueError).norm(); }
+families::ErrorBand<GyrolessSample> gyroless_error_band(const GyrolessExperiment& e) {
+  families::ErrorBand<GyrolessSample> band{
+      {{"|attitude error| (deg)", attitude_error_deg}, {"|torque error| (N m)", torque_error_nm}},
+      {},
+      {{e.options.window_start, "steady state"}}};
+  for (std::size_t f = 0; f < e.filters.size(); ++f)
+    if (e.filters[f].swept_from.empty()) band.filters.push_back(f);
+  return band;
+}
+
 }  // namespace
 
 namespace families {
@@ -209,7 +223,7 @@ const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample
   static const StreamOutputs<GyrolessExperiment, GyrolessFilterStatistics, GyrolessSample> outputs{
       format_gyroless_trajectory_csv,
       metrics_runs_csv_of<&gyroless_metric_list, GyrolessExperiment, GyrolessFilterStatistics>,
-      format_gyroless_summary_json, write_gyroless_plots};
+      format_gyroless_summary_json, write_gyroless_plots, gyroless_error_band};
   return outputs;
 }
 

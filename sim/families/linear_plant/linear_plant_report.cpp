@@ -160,6 +160,16 @@ void write_linear_plant_plots(const std::string& dir, const LinearPlantExperimen
   run_plot_script(script, png, {"error.png"});
 }
 
+// The Monte-Carlo figure (error_norms.png): |z − ẑ| of every filter, the steady-state window's
+// start marked.
+double estimate_error_norm(const LinearPlantSample& s) { return (s.z - s.z_hat).norm(); }
+families::ErrorBand<LinearPlantSample> linear_plant_error_band(const LinearPlantExperiment& e) {
+  families::ErrorBand<LinearPlantSample> band{
+      {{"|z - zhat|", estimate_error_norm}}, {}, {{e.options.window_start, "steady state"}}};
+  for (std::size_t f = 0; f < e.filters.size(); ++f) band.filters.push_back(f);
+  return band;
+}
+
 }  // namespace
 
 namespace families {
@@ -167,7 +177,7 @@ namespace families {
 const StreamOutputs<LinearPlantExperiment, LinearPlantStatistics, LinearPlantSample>& linear_plant_outputs() {
   static const StreamOutputs<LinearPlantExperiment, LinearPlantStatistics, LinearPlantSample> outputs{
       format_linear_plant_trajectory_csv, format_linear_plant_runs_csv, format_linear_plant_summary_json,
-      write_linear_plant_plots};
+      write_linear_plant_plots, linear_plant_error_band};
   return outputs;
 }
 

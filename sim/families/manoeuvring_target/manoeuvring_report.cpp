@@ -314,6 +314,25 @@ void write_manoeuvring_plots(const std::string& dir, const ManoeuvringExperiment
   run_plot_script(script, png, names);
 }
 
+// The Monte-Carlo figure (error_norms.png): the position, velocity and manoeuvre errors' norms
+// of every filter, the metric windows' starts marked.
+double position_error_m(const ManoeuvringSample& s) { return (s.estimate - s.truth).head<3>().norm(); }
+double velocity_error_mps(const ManoeuvringSample& s) { return (s.estimate - s.truth).tail<3>().norm(); }
+double manoeuvre_error_mps2(const ManoeuvringSample& s) { return (s.u_hat - s.true_u).norm(); }
+families::ErrorBand<ManoeuvringSample> manoeuvring_error_band(const ManoeuvringExperiment& e) {
+  families::ErrorBand<ManoeuvringSample> band{{{"|position error| (m)", position_error_m},
+                                               {"|velocity error| (m/s)", velocity_error_mps},
+                                               {"|manoeuvre error| (m/s^2)", manoeuvre_error_mps2}},
+                                              {},
+                                              {}};
+  for (std::size_t f = 0; f < e.filters.size(); ++f) band.filters.push_back(f);
+  for (const MetricWindow& w : e.options.windows) band.marks.emplace_back(w.start, w.name);
+  std::ostringstream tolerance;
+  tolerance << "settle tolerance " << e.options.maneuver_tolerance << " m/s^2";
+  band.thresholds.push_back({2, e.options.maneuver_tolerance, tolerance.str()});
+  return band;
+}
+
 }  // namespace
 
 namespace families {
@@ -321,7 +340,7 @@ namespace families {
 const StreamOutputs<ManoeuvringExperiment, ManoeuvringFilterStatistics, ManoeuvringSample>& manoeuvring_outputs() {
   static const StreamOutputs<ManoeuvringExperiment, ManoeuvringFilterStatistics, ManoeuvringSample> outputs{
       format_manoeuvring_trajectory_csv, format_manoeuvring_runs_csv, format_manoeuvring_summary_json,
-      write_manoeuvring_plots};
+      write_manoeuvring_plots, manoeuvring_error_band};
   return outputs;
 }
 

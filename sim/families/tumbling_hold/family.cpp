@@ -67,9 +67,10 @@ class TumblingHold final : public Family {
                  {"summary.json", format_hold_summary_json(setup.scenario, *results, context)}};
     out.inputs = {k.file_path.empty() ? k.synthesize_path : k.file_path};
     out.plots = setup.scenario.plots;
-    out.draw_plots = [results, seed = r.seed, runs = r.runs](const std::string& dir, const std::string& title,
-                                                             AtomicFileSet& outputs) {
+    out.draw_plots = [results, scenario = setup.scenario, seed = r.seed, runs = r.runs](
+                         const std::string& dir, const std::string& title, AtomicFileSet& outputs) {
       write_hold_plots(dir, *results->front().trajectory, plot_title(title, seed, runs), outputs);
+      write_hold_error_band(dir, *results, scenario, plot_title(title, seed, runs), outputs);
     };
     return out;
   }

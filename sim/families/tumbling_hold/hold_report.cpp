@@ -138,4 +138,21 @@ void write_hold_plots(const std::string& dir, const HoldTrajectory& tr, const st
   run_plot_script(script, png, names);
 }
 
+void write_hold_error_band(const std::string& dir, const std::vector<HoldRunResult>& runs, const HoldScenario& s,
+                           const std::string& title, hinf::AtomicFileSet& outputs) {
+  std::ostringstream settle;
+  settle << "settle " << s.settle_threshold << " m";
+  const ErrorBandFigure fig{"error_norms.png",
+                            title,
+                            {"closed loop"},
+                            {"|ρ − ρ*| (m)", "|ρ̇| (m/s)"},
+                            hold_trace_window(s),
+                            {{s.steady_state_start, "steady state"}},
+                            {{0, s.settle_threshold, settle.str()}}};
+  std::vector<RunTraces> traces;
+  for (const HoldRunResult& r : runs) traces.push_back(r.traces);
+  const HoldTrajectory& tr = *runs.front().trajectory;
+  write_error_band_figure(dir, fig, traces, RawNorms{tr.t, {hold_error_norms(tr)}}, outputs);
+}
+
 }  // namespace hinf::sim

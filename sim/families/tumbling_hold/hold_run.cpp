@@ -136,6 +136,17 @@ HoldMetrics window_metrics(const HoldScenario& s, const HoldTrajectory& tr) {
 
 }  // namespace
 
+double hold_trace_window(const HoldScenario& s) { return s.duration / kPlotWindowsPerRun; }
+
+std::vector<std::vector<double>> hold_error_norms(const HoldTrajectory& tr) {
+  std::vector<std::vector<double>> norms(2);
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    norms[0].push_back(tr.error[k].norm());
+    norms[1].push_back(tr.velocity[k].norm());
+  }
+  return norms;
+}
+
 HoldRunResult simulate_hold_run(const HoldSetup& setup, std::uint64_t run_seed, bool keep_trajectory) {
   const HoldScenario& s = setup.scenario;
   const HoldTruth truth(s);
@@ -192,6 +203,7 @@ HoldRunResult simulate_hold_run(const HoldSetup& setup, std::uint64_t run_seed, 
   if (pulses.shortest()) r.metrics.min_pulse_s = static_cast<double>(*pulses.shortest()) * h;
   r.metrics.saturation_fraction = static_cast<double>(saturated) / static_cast<double>(steps - 1);
   require_finite_metrics(r.metrics);
+  r.traces = run_traces({tr.t}, {hold_error_norms(tr)}, hold_trace_window(s));
   if (keep_trajectory) r.trajectory = std::move(tr);
   return r;
 }

@@ -15,9 +15,11 @@ std::string gnuplot_quoted(const std::string& text);
 
 // One png of `panels` panels stacked over a shared time axis: "set output PNG", a multiplot
 // titled `title`, then per panel p its y label ylabel(p), the x label "time (s)" under the
-// last panel only, the key outside right of the first panel only, and "plot " curves(p).
+// last panel only, the key outside right of the first panel only, the commands before(p) when
+// given (the panel's arrows and labels), and "plot " curves(p).
 std::string gnuplot_stacked_figure(const std::string& png, const std::string& title, int panels,
                                    const std::function<std::string(int)>& ylabel,
-                                   const std::function<std::string(int)>& curves);
+                                   const std::function<std::string(int)>& curves,
+                                   const std::function<std::string(int)>& before = nullptr);
 
 }  // namespace hinf

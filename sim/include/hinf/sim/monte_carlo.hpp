@@ -33,25 +33,4 @@ std::vector<RunResult> run_monte_carlo(const RunSetup& setup, long runs, std::ui
 // The seeds of runs 0 … runs − 1, in order: run_seed(seed, i).
 std::vector<std::uint64_t> run_seeds(std::uint64_t seed, long runs);
 
-// The Monte-Carlo runs of a scenario family: stats[i] = run_one(run_seed(seed, i),
-// on_sample), where on_sample keeps filter f's samples of run 0 in (*samples)[f] when
-// `samples` is given (sized by the caller) and is empty otherwise. for_each_run's contract.
-template <class Stats, class Sample, class RunOne>
-std::vector<std::vector<Stats>> run_family_campaign(long runs, int jobs, std::uint64_t seed,
-                                                    std::vector<std::vector<Sample>>* samples, const RunOne& run_one,
-                                                    const ProgressCallback& progress,
-                                                    const std::function<bool()>& interrupted = nullptr) {
-  std::vector<std::vector<Stats>> stats(static_cast<std::size_t>(runs));
-  for_each_run(
-      runs, jobs,
-      [&](long i) {
-        std::function<void(int, const Sample&)> on_sample;
-        if (i == 0 && samples)
-          on_sample = [samples](int f, const Sample& s) { (*samples)[static_cast<std::size_t>(f)].push_back(s); };
-        stats[static_cast<std::size_t>(i)] = run_one(run_seed(seed, i), on_sample);
-      },
-      progress, interrupted);
-  return stats;
-}
-
 }  // namespace hinf::sim

@@ -52,6 +52,7 @@ struct FilterOutcome {
 // (at most kPlotTracePoints of them) for the Monte-Carlo band of the plots (docs/experiments.md
 // "Plots"); window: metrics.converge_window_s when set, else 1 % of the duration.
 inline constexpr long kPlotTracePoints = 600;
+inline constexpr double kPlotWindowsPerRun = 100;  // the window when the scenario sets none: duration / 100
 struct PlotTraceSettings {
   double window_s = 0;
   long stride = 1;  // samples

@@ -28,6 +28,11 @@ std::string format_hold_summary_json(const HoldScenario& s, const std::vector<Ho
                                      const HoldSummaryContext& context);
 // position.png, velocity.png, thrusters.png (the seed paper's three figures) from run 0.
 // Throws PlotError (plots.hpp).
+// DIR/error_norms.png (write_error_band_figure, plots.hpp): |ρ − ρ*| and |ρ̇| of every run (their
+// traces) and run 0's (its trajectory), the steady-state start marked. Throws PlotError.
+void write_hold_error_band(const std::string& dir, const std::vector<HoldRunResult>& runs, const HoldScenario& s,
+                           const std::string& title, hinf::AtomicFileSet& outputs);
+
 void write_hold_plots(const std::string& dir, const HoldTrajectory& tr, const std::string& title,
                       hinf::AtomicFileSet& outputs);
 

@@ -10,6 +10,7 @@
 
 #include "hinf/models/controller.hpp"
 #include "hinf/sim/hold_scenario.hpp"
+#include "hinf/sim/plots.hpp"
 
 namespace hinf::sim {
 
@@ -46,7 +47,13 @@ struct HoldRunResult {
   std::uint64_t seed = 0;
   HoldMetrics metrics;
   std::optional<HoldTrajectory> trajectory;
+  RunTraces traces;  // |ρ − ρ*| and |ρ̇| (one "filter": the closed loop) for the Monte-Carlo figure
 };
+
+// The moving RMS's window of the Monte-Carlo figure (plots.hpp): 1 % of the duration.
+double hold_trace_window(const HoldScenario& s);
+// The figure's norms at every control sample: {|ρ − ρ*|, |ρ̇|}.
+std::vector<std::vector<double>> hold_error_norms(const HoldTrajectory& tr);
 
 // Throws SimulationError (run.hpp) on a non-finite truth.
 HoldRunResult simulate_hold_run(const HoldSetup& setup, std::uint64_t run_seed, bool keep_trajectory);
