@@ -51,18 +51,26 @@ struct RunNoise {
 };
 
 // The run's recorded series, sized once.
+// What a run records: the error norms (the metrics') and the instants always; the truth,
+// measurements, thrust and estimates only when the trajectory is kept (run 0).
 struct RunRecord {
-  RunRecord(const std::vector<std::string>& names, long steps) : pos_err(names.size()), vel_err(names.size()) {
-    traj.t.reserve(steps);
-    traj.truth.reserve(steps);
-    traj.measurement.reserve(steps);
-    traj.thrust.reserve(steps);
+  RunRecord(const std::vector<std::string>& names, long steps, bool keep_trajectory)
+      : keep(keep_trajectory), pos_err(names.size()), vel_err(names.size()) {
+    const auto n = static_cast<std::size_t>(steps);
+    traj.t.reserve(n);
     traj.filters.resize(names.size());
     for (std::size_t f = 0; f < names.size(); ++f) {
       traj.filters[f].name = names[f];
-      traj.filters[f].estimate.reserve(steps);
+      pos_err[f].reserve(n);
+      vel_err[f].reserve(n);
+      if (keep) traj.filters[f].estimate.reserve(n);
     }
+    if (!keep) return;
+    traj.truth.reserve(n);
+    traj.measurement.reserve(n);
+    traj.thrust.reserve(n);
   }
+  bool keep;
   Trajectory traj;
   std::vector<std::vector<double>> pos_err, vel_err;
 };
@@ -99,7 +107,9 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
   const std::vector<std::unique_ptr<Estimator>> estimators = make_estimators(setup);
   const std::vector<std::string> names = filter_names(s);
   const std::size_t nf = estimators.size();
-  RunRecord rec(names, steps);
+  RunRecord rec(names, steps, keep_trajectory);
+  const std::size_t hinf_index =  // the filter whose estimate the thrust may use (nf: none)
+      static_cast<std::size_t>(std::find(names.begin(), names.end(), "hinf") - names.begin());
   Trajectory& traj = rec.traj;
   const Vector6 nan6 = Vector6::Constant(std::numeric_limits<double>::quiet_NaN());
 
@@ -125,16 +135,18 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
           e = nan6;
         }
       }
-      if (names[f] == "hinf") hinf_estimate = e;
-      track.estimate.push_back(e);
+      if (f == hinf_index) hinf_estimate = e;
+      if (rec.keep) track.estimate.push_back(e);
       rec.pos_err[f].push_back((e.head<3>() - x.head<3>()).norm());
       rec.vel_err[f].push_back((e.tail<3>() - x.tail<3>()).norm());
     }
     const Vector3 u = thrust(s, x, hinf_estimate, t);
     traj.t.push_back(t);
-    traj.truth.push_back(x);
-    traj.measurement.push_back(y);
-    traj.thrust.push_back(u);
+    if (rec.keep) {
+      traj.truth.push_back(x);
+      traj.measurement.push_back(y);
+      traj.thrust.push_back(u);
+    }
     for (std::size_t f = 0; f < nf; ++f)
       if (!traj.filters[f].diverged_at) estimators[f]->advance(u, t);
 

@@ -131,8 +131,8 @@ class Rekf : public detail::KalmanCore<Model, Measurement> {
     Eigen::Matrix<double, NL, NL> G = gamma_ * gamma_ * Eigen::Matrix<double, NL, NL>::Identity();
     G.noalias() -= LP * L_.transpose();
     detail::symmetrise(G);
-    Eigen::LLT<Eigen::Matrix<double, NL, NL>> llt(G);
-    if (!G.allFinite() || llt.info() != Eigen::Success) {
+    const detail::SmallLlt<NL> llt(G);
+    if (!detail::all_finite(G) || !llt.ok()) {
       gamma_min_eig_ = gamma_condition_min_eigenvalue_of(P);
       return false;
     }

@@ -35,10 +35,10 @@ FilterStatus joseph_update(StateVector& x, Eigen::Matrix<double, NX, NX>& P,
   S.noalias() = HP * H.transpose();
   S += Rbar;
   symmetrise(S);
-  if (!S.allFinite()) return FilterStatus::InnovationCovarianceNotPD;
-  Eigen::LLT<Eigen::Matrix<double, NZ, NZ>> llt(S);
-  if (llt.info() != Eigen::Success) return FilterStatus::InnovationCovarianceNotPD;
-  nis = llt.matrixL().solve(nu).squaredNorm();
+  if (!all_finite(S)) return FilterStatus::InnovationCovarianceNotPD;
+  const SmallLlt<NZ> llt(S);
+  if (!llt.ok()) return FilterStatus::InnovationCovarianceNotPD;
+  nis = llt.lower_solve(nu).squaredNorm();
   if (nis > nis_gate) return FilterStatus::InnovationRejected;
   K = llt.solve(HP).transpose();
   correct(x, K, nu);

@@ -154,10 +154,10 @@ class KalmanCore {
 
   // f(x, u) and its Jacobian F; Ok, or why the step cannot be taken.
   FilterStatus evaluate_process(const Input& u, State& x_next, StateCov& F) const {
-    if (!u.allFinite()) return FilterStatus::NonFiniteInput;
+    if (!all_finite(u)) return FilterStatus::NonFiniteInput;
     x_next = model_.f(x_, u);
     F = model_.F(x_, u);
-    if (!x_next.allFinite() || !F.allFinite()) return FilterStatus::ModelNotFinite;
+    if (!all_finite(x_next) || !all_finite(F)) return FilterStatus::ModelNotFinite;
     return FilterStatus::Ok;
   }
 
@@ -175,10 +175,10 @@ class KalmanCore {
 
   // h(x) and its Jacobian H; Ok, or why the update cannot be taken.
   FilterStatus evaluate_measurement(const Observation& y, Observation& y_pred, MeasurementJacobian& H) const {
-    if (!y.allFinite()) return FilterStatus::NonFiniteInput;
+    if (!all_finite(y)) return FilterStatus::NonFiniteInput;
     y_pred = meas_.h(x_);
     H = meas_.H(x_);
-    if (!y_pred.allFinite() || !H.allFinite()) return FilterStatus::ModelNotFinite;
+    if (!all_finite(y_pred) || !all_finite(H)) return FilterStatus::ModelNotFinite;
     return FilterStatus::Ok;
   }
 
