@@ -35,18 +35,26 @@ Eigen::Matrix<double, 6, 6> process_covariance(double sample_time, double accele
   return acceleration_variance * G * G.transpose();
 }
 
+// The measurement noise covariance of the Kalman filters (EKF and REKF): the first-order
+// covariance of the Cartesian conversion at the sample (docs/maths.md (82)) plus the floor.
+Eigen::Matrix3d measurement_covariance(const KalmanSettings& k, const MeasurementSample& y) {
+  return hinf::models::RangeAzimuthElevation::covariance_through(y.jacobian, std::sqrt(k.range_variance),
+                                                                 std::sqrt(k.azimuth_variance),
+                                                                 std::sqrt(k.elevation_variance)) +
+         k.r_floor * Eigen::Matrix3d::Identity();
+}
+
 class EkfEstimator final : public Estimator {
  public:
   EkfEstimator(const Scenario& s, const KalmanSettings& k)
       : settings_(k),
-        sensor_(s.C_bl),
         ekf_(hinf::models::HillModel(s.orbital_rate, s.chaser_mass, s.sample_time, hinf::models::Discretisation::ZeroOrderHold),
              hinf::models::CartesianPosition(), process_covariance(s.sample_time, k.acceleration_variance),
              Eigen::Matrix3d::Identity()) {
     ekf_.init(s.initial_estimate, Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal());
   }
   Vector6 estimate(const MeasurementSample& y, double t) override {
-    ekf_.set_R(measurement_covariance(y));
+    ekf_.set_R(measurement_covariance(settings_, y));
     const rt::FilterStatus status = ekf_.update(y.cartesian);
     record(status == rt::FilterStatus::Ok, rt::to_string(status), t);
     return ekf_.x();
@@ -58,14 +66,7 @@ class EkfEstimator final : public Estimator {
   }
 
  private:
-  Eigen::Matrix3d measurement_covariance(const MeasurementSample& y) const {
-    return sensor_.position_covariance(y.rae, std::sqrt(settings_.range_variance),
-                                       std::sqrt(settings_.azimuth_variance),
-                                       std::sqrt(settings_.elevation_variance)) +
-           settings_.r_floor * Eigen::Matrix3d::Identity();
-  }
   KalmanSettings settings_;
-  hinf::models::RangeAzimuthElevation sensor_;
   HillEkf ekf_;
 };
 
@@ -101,14 +102,11 @@ using HillRekf = hinf::runtime::Rekf<hinf::models::HillModel, hinf::models::Cart
 class RekfEstimator final : public Estimator {
  public:
   RekfEstimator(const Scenario& s, const KalmanSettings& k, const RekfSettings& r)
-      : settings_(k), sensor_(s.C_bl), rekf_(make(s, k, r)) {
+      : settings_(k), rekf_(make(s, k, r)) {
     rekf_.init(s.initial_estimate, Eigen::Matrix<double, 6, 1>(s.initial_sigma.cwiseAbs2()).asDiagonal());
   }
   Vector6 estimate(const MeasurementSample& y, double t) override {
-    rekf_.set_R(sensor_.position_covariance(y.rae, std::sqrt(settings_.range_variance),
-                                            std::sqrt(settings_.azimuth_variance),
-                                            std::sqrt(settings_.elevation_variance)) +
-                settings_.r_floor * Eigen::Matrix3d::Identity());
+    rekf_.set_R(measurement_covariance(settings_, y));
     const auto status = rekf_.update(y.cartesian);
     record(status == hinf::runtime::FilterStatus::Ok, hinf::runtime::to_string(status), t);
     return rekf_.x();
@@ -138,7 +136,6 @@ class RekfEstimator final : public Estimator {
                     Eigen::Matrix3d::Identity(), gamma, A_k, Eigen::Matrix3d::Zero(), L);
   }
   KalmanSettings settings_;
-  hinf::models::RangeAzimuthElevation sensor_;
   HillRekf rekf_;
 };
 

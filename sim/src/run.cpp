@@ -122,6 +122,7 @@ RunResult simulate_run(const RunSetup& setup, std::uint64_t run_seed, bool keep_
     MeasurementSample y;
     y.rae = sensor.h(x) + Vector3(noise.range.next(), noise.azimuth.next(), noise.elevation.next());
     y.cartesian = sensor.position_from_measurement(y.rae);
+    y.jacobian = sensor.conversion_jacobian(y.rae);
 
     Vector6 hinf_estimate = nan6;
     for (std::size_t f = 0; f < nf; ++f) {

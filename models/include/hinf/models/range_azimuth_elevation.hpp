@@ -102,7 +102,11 @@ class RangeAzimuthElevation {
   // First-order covariance of position_from_measurement(y) for independent noises with
   // standard deviations sigma_rho (m), sigma_alpha, sigma_beta (rad).
   Eigen::Matrix3d position_covariance(const Vector& y, double sigma_rho, double sigma_alpha, double sigma_beta) const {
-    const Eigen::Matrix3d J = conversion_jacobian(y);
+    return covariance_through(conversion_jacobian(y), sigma_rho, sigma_alpha, sigma_beta);
+  }
+  // The same with J = conversion_jacobian(y) at hand (computed once for several filters).
+  static Eigen::Matrix3d covariance_through(const Eigen::Matrix3d& J, double sigma_rho, double sigma_alpha,
+                                            double sigma_beta) {
     const Eigen::Vector3d var(sigma_rho * sigma_rho, sigma_alpha * sigma_alpha, sigma_beta * sigma_beta);
     Eigen::Matrix3d Cov = J * var.asDiagonal() * J.transpose();
     return 0.5 * (Cov + Cov.transpose());

@@ -24,6 +24,7 @@ namespace hinf::sim {
 struct MeasurementSample {
   Vector3 rae;        // ρ (m), α (rad), β (rad), noisy
   Vector3 cartesian;  // C_blᵀ (ρ cosβ cosα, ρ cosβ sinα, −ρ sinβ)
+  Eigen::Matrix3d jacobian;  // d cartesian / d rae at rae (the Kalman filters' R; computed once a step)
 };
 
 // Steps on which a runtime filter reported a non-ok status (it then skips that step).
