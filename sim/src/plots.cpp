@@ -43,6 +43,18 @@ std::string lighter(const std::string& hex, double white) {
   return os.str();
 }
 
+// A dotted vertical line at time t, its label at height label_y of the panel (graph units).
+void vertical_mark(std::ostream& gp, double t, const std::string& label, double label_y) {
+  gp << "set arrow from first " << t << ", graph 0 to first " << t << ", graph 1 nohead dt 3 lc rgb '#555555'\n"
+     << "set label " << quoted(label) << " at first " << t << ", graph " << label_y << " offset 0.5,0 font ',9'\n";
+}
+
+// A dashed horizontal line at y = value (a threshold), its label at the left.
+void horizontal_mark(std::ostream& gp, double value, const std::string& label) {
+  gp << "set arrow from graph 0, first " << value << " to graph 1, first " << value << " nohead dt 2 lc rgb '#555555'\n"
+     << "set label " << quoted(label) << " at graph 0.01, first " << value << " offset 0,0.6 font ',9'\n";
+}
+
 // t, then per band its median, 5 % and 95 % (bands in the order f Q + q: band file columns
 // 2 + 3 (f Q + q) + {0, 1, 2}).
 std::string band_table(const std::vector<double>& t, const std::vector<TraceBand>& bands) {
@@ -138,15 +150,13 @@ void error_figure(std::ostringstream& gp, const std::vector<RunResult>& results,
   gp << "set output " << quoted(out) << "\nset logscale y\nset format y '10^{%L}'\n"
      << "set title " << quoted(heading) << " noenhanced\n";
   const MetricSettings ms = s.metric_settings();
-  gp << "unset arrow\nunset label\n"
-     << "set arrow from first " << ms.steady_state_start_s << ", graph 0 to first " << ms.steady_state_start_s
-     << ", graph 1 nohead dt 3 lc rgb '#555555'\n"
-     << "set label 'steady state' at first " << ms.steady_state_start_s << ", graph 0.96 offset 0.5,0 font ',9'\n";
-  if (quantity == 0)
-    gp << "set arrow from graph 0, first " << ms.converge_threshold_m << " to graph 1, first " << ms.converge_threshold_m
-       << " nohead dt 2 lc rgb '#555555'\n"
-       << "set label 'convergence " << ms.converge_threshold_m << " m' at graph 0.01, first "
-       << ms.converge_threshold_m << " offset 0,0.6 font ',9'\n";
+  gp << "unset arrow\nunset label\n";
+  vertical_mark(gp, ms.steady_state_start_s, "steady state", 0.96);
+  if (quantity == 0) {
+    std::ostringstream label;
+    label << "convergence " << ms.converge_threshold_m << " m";
+    horizontal_mark(gp, ms.converge_threshold_m, label.str());
+  }
   gp << "plot " << error_curves(curves, quantity)
      << "\nunset logscale y\nset format y '%g'\nunset arrow\nunset label\n";
 }
@@ -218,14 +228,9 @@ std::string error_band_script(const ErrorBandFigure& fig, long runs, const Error
   const auto marks = [&](int q) {
     std::ostringstream m;
     m << "unset arrow\nunset label\n";
-    for (const auto& [t, label] : fig.marks)
-      m << "set arrow from first " << t << ", graph 0 to first " << t << ", graph 1 nohead dt 3 lc rgb '#555555'\n"
-        << "set label " << quoted(label) << " at first " << t << ", graph 0.92 offset 0.5,0 font ',9'\n";
+    for (const auto& [t, label] : fig.marks) vertical_mark(m, t, label, 0.92);
     for (const ErrorBandFigure::Threshold& h : fig.thresholds)
-      if (h.norm == static_cast<std::size_t>(q))
-        m << "set arrow from graph 0, first " << h.value << " to graph 1, first " << h.value
-          << " nohead dt 2 lc rgb '#555555'\n"
-          << "set label " << quoted(h.label) << " at graph 0.01, first " << h.value << " offset 0,0.6 font ',9'\n";
+      if (h.norm == static_cast<std::size_t>(q)) horizontal_mark(m, h.value, h.label);
     return m.str();
   };
   gp << gnuplot_stacked_figure(

@@ -152,7 +152,8 @@ void write_hold_error_band(const std::string& dir, const std::vector<HoldRunResu
   std::vector<RunTraces> traces;
   for (const HoldRunResult& r : runs) traces.push_back(r.traces);
   const HoldTrajectory& tr = *runs.front().trajectory;
-  write_error_band_figure(dir, fig, traces, RawNorms{tr.t, {hold_error_norms(tr)}}, outputs);
+  write_error_band_figure(dir, fig, traces, runs.size() == 1 ? RawNorms{tr.t, {hold_error_norms(tr)}} : RawNorms{},
+                          outputs);
 }
 
 }  // namespace hinf::sim
